@@ -1,0 +1,50 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace DiskImpact
+{
+  /**
+   * A CSV table: a header line and rows of cells, numbers with 15
+   * significant digits. Written atomically (a temporary file renamed into
+   * place), so a reader never sees a half-written table.
+   */
+  class CsvTable
+  {
+  public:
+    explicit CsvTable(const std::vector<std::string> &column_names);
+
+    /// Start a new row; cells are then added left to right.
+    void
+    start_row();
+    void
+    add(double value);
+    void
+    add(long long value);
+    void
+    add(unsigned int value);
+    void
+    add(int value);
+    void
+    add(const std::string &text);
+    /// An empty cell (a value that does not exist for this row).
+    void
+    add_empty();
+
+    unsigned int
+    n_rows() const;
+
+    /// Write to @p filename through a temporary file and a rename.
+    void
+    write(const std::string &filename) const;
+
+    /// Format a number the way the table does.
+    static std::string
+    format(double value);
+
+  private:
+    std::vector<std::string>              header;
+    std::vector<std::vector<std::string>> rows;
+  };
+} // namespace DiskImpact

@@ -1,0 +1,229 @@
+#include "elasticity_operator.h"
+
+#include "geometry.h"
+
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/dofs/dof_renumbering.h>
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
+
+#include <deal.II/numerics/vector_tools.h>
+
+namespace DiskImpact
+{
+  using namespace dealii;
+
+  void
+  FiniteElementParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Finite element");
+    prm.declare_entry("Degree",
+                      "2",
+                      Patterns::Integer(1, 4),
+                      "Polynomial degree k of the vector Q_k elements; the "
+                      "curved boundary is mapped with degree k as well.");
+    prm.leave_subsection();
+  }
+
+  void
+  FiniteElementParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Finite element");
+    degree = prm.get_integer("Degree");
+    prm.leave_subsection();
+  }
+
+  ElasticityOperator::ElasticityOperator(const unsigned int degree)
+    : fe_degree(degree)
+  {}
+
+  unsigned int
+  ElasticityOperator::degree() const
+  {
+    return fe_degree;
+  }
+
+  void
+  ElasticityOperator::setup(
+    const parallel::distributed::Triangulation<2> &triangulation,
+    const DiskGeometry                            &geometry)
+  {
+    fe      = std::make_unique<FESystem<2>>(FE_Q<2>(fe_degree), 2);
+    mapping = std::make_unique<MappingQ<2>>(fe_degree);
+
+    dof_handler.reinit(triangulation);
+    dof_handler.distribute_dofs(*fe);
+    // Bandwidth-reducing order: the mat-vec products of the eigensolver and
+    // the time integrator run through memory in order.
+    DoFRenumbering::Cuthill_McKee(dof_handler);
+    owned_dofs = dof_handler.locally_owned_dofs();
+    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant_dofs);
+
+    constraints.clear();
+    constraints.reinit(relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    if (geometry.is_half_disk())
+      VectorTools::interpolate_boundary_values(
+        *mapping,
+        dof_handler,
+        BoundaryIds::symmetry,
+        Functions::ZeroFunction<2>(2),
+        constraints,
+        ComponentMask(std::vector<bool>{false, true}));
+    constraints.close();
+
+    // K couples the two displacement components, M does not: M gets its
+    // own pattern, half as many entries (its products dominate the
+    // eigensolver's time). M's pattern is a subset of K's.
+    const MPI_Comm comm = triangulation.get_communicator();
+    Table<2, DoFTools::Coupling> all_components(2, 2), same_component(2, 2);
+    all_components.fill(DoFTools::always);
+    same_component.fill(DoFTools::none);
+    same_component(0, 0) = same_component(1, 1) = DoFTools::always;
+    auto make_matrix = [&](const Table<2, DoFTools::Coupling> &coupling,
+                           PETScWrappers::MPI::SparseMatrix   &matrix) {
+      DynamicSparsityPattern dsp(relevant_dofs);
+      DoFTools::make_sparsity_pattern(
+        dof_handler, coupling, dsp, constraints, false);
+      SparsityTools::distribute_sparsity_pattern(dsp,
+                                                 owned_dofs,
+                                                 comm,
+                                                 relevant_dofs);
+      matrix.reinit(owned_dofs, owned_dofs, dsp, comm);
+    };
+    make_matrix(all_components, stiffness);
+    make_matrix(same_component, mass);
+  }
+
+  void
+  ElasticityOperator::assemble(const Material &material)
+  {
+    const QGauss<2>     quadrature(fe_degree + 1);
+    FEValues<2>         fe_values(*mapping,
+                          *fe,
+                          quadrature,
+                          update_values | update_gradients |
+                            update_JxW_values);
+    const unsigned int  dofs_per_cell = fe->n_dofs_per_cell();
+    FullMatrix<double>  cell_mass(dofs_per_cell, dofs_per_cell);
+    FullMatrix<double>  cell_stiffness(dofs_per_cell, dofs_per_cell);
+    std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
+    const FEValuesExtractors::Vector     displacement(0);
+
+    const SymmetricTensor<4, 2> c   = material.stiffness_tensor();
+    const double                rho = material.density();
+
+    std::vector<SymmetricTensor<2, 2>> eps(dofs_per_cell);
+    std::vector<Tensor<1, 2>>          phi(dofs_per_cell);
+
+    mass      = 0.;
+    stiffness = 0.;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          cell_mass      = 0.;
+          cell_stiffness = 0.;
+          for (const unsigned int q : fe_values.quadrature_point_indices())
+            {
+              for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                {
+                  phi[i] = fe_values[displacement].value(i, q);
+                  eps[i] = fe_values[displacement].symmetric_gradient(i, q);
+                }
+              const double dx = fe_values.JxW(q);
+              for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                {
+                  const SymmetricTensor<2, 2> c_eps_i = c * eps[i];
+                  for (unsigned int j = 0; j < dofs_per_cell; ++j)
+                    {
+                      cell_mass(i, j) += rho * (phi[i] * phi[j]) * dx;
+                      cell_stiffness(i, j) += (c_eps_i * eps[j]) * dx;
+                    }
+                }
+            }
+          cell->get_dof_indices(dof_indices);
+          constraints.distribute_local_to_global(cell_mass, dof_indices, mass);
+          constraints.distribute_local_to_global(cell_stiffness,
+                                                 dof_indices,
+                                                 stiffness);
+        }
+    mass.compress(VectorOperation::add);
+    stiffness.compress(VectorOperation::add);
+  }
+
+  void
+  ElasticityOperator::move_constrained_eigenvalues(const double eigenvalue)
+  {
+    for (const auto i : owned_dofs)
+      if (constraints.is_constrained(i))
+        mass.set(i, i, stiffness.diag_element(i) / eigenvalue);
+    mass.compress(VectorOperation::insert);
+  }
+
+  const DoFHandler<2> &
+  ElasticityOperator::get_dof_handler() const
+  {
+    return dof_handler;
+  }
+
+  const MappingQ<2> &
+  ElasticityOperator::get_mapping() const
+  {
+    return *mapping;
+  }
+
+  const AffineConstraints<double> &
+  ElasticityOperator::get_constraints() const
+  {
+    return constraints;
+  }
+
+  const IndexSet &
+  ElasticityOperator::locally_owned_dofs() const
+  {
+    return owned_dofs;
+  }
+
+  const IndexSet &
+  ElasticityOperator::locally_relevant_dofs() const
+  {
+    return relevant_dofs;
+  }
+
+  const PETScWrappers::MPI::SparseMatrix &
+  ElasticityOperator::mass_matrix() const
+  {
+    return mass;
+  }
+
+  const PETScWrappers::MPI::SparseMatrix &
+  ElasticityOperator::stiffness_matrix() const
+  {
+    return stiffness;
+  }
+
+  PETScWrappers::MPI::Vector
+  ElasticityOperator::create_vector() const
+  {
+    return PETScWrappers::MPI::Vector(owned_dofs,
+                                      dof_handler.get_communicator());
+  }
+
+  PETScWrappers::MPI::Vector
+  ElasticityOperator::create_ghosted(
+    const PETScWrappers::MPI::Vector &vector) const
+  {
+    PETScWrappers::MPI::Vector ghosted(owned_dofs,
+                                       relevant_dofs,
+                                       dof_handler.get_communicator());
+    ghosted = vector;
+    return ghosted;
+  }
+} // namespace DiskImpact

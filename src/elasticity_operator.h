@@ -1,0 +1,102 @@
+#pragma once
+
+#include "material.h"
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <deal.II/distributed/tria.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_q.h>
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/petsc_sparse_matrix.h>
+#include <deal.II/lac/petsc_vector.h>
+
+#include <memory>
+
+namespace DiskImpact
+{
+  class DiskGeometry;
+
+  /// Subsection "Finite element": the polynomial degree of the elements.
+  struct FiniteElementParameters
+  {
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    unsigned int degree = 2;
+  };
+
+  /**
+   * The discrete linear elasticity operator of the disk: vector Q_k elements
+   * with a degree-k boundary mapping, the constraints (hanging nodes, the
+   * symmetry condition u_y = 0 of a half disk), and the mass and stiffness
+   * matrices as distributed PETSc matrices.
+   */
+  class ElasticityOperator
+  {
+  public:
+    explicit ElasticityOperator(unsigned int degree);
+
+    unsigned int
+    degree() const;
+
+    /// Distribute DoFs on @p triangulation, build constraints and matrices.
+    void
+    setup(const dealii::parallel::distributed::Triangulation<2> &triangulation,
+          const DiskGeometry                                    &geometry);
+
+    /// Assemble M (rho u.v) and K (eps(u) : C : eps(v)).
+    void
+    assemble(const Material &material);
+
+    /**
+     * Make constrained DoFs harmless for the eigenproblem: they are decoupled
+     * rows with K_ii / M_ii set to @p eigenvalue, far above the spectrum of
+     * interest (deal.II step-36 discusses these spurious eigenvalues).
+     */
+    void
+    move_constrained_eigenvalues(double eigenvalue);
+
+    const dealii::DoFHandler<2> &
+    get_dof_handler() const;
+    const dealii::MappingQ<2> &
+    get_mapping() const;
+    const dealii::AffineConstraints<double> &
+    get_constraints() const;
+    const dealii::IndexSet &
+    locally_owned_dofs() const;
+    const dealii::IndexSet &
+    locally_relevant_dofs() const;
+    const dealii::PETScWrappers::MPI::SparseMatrix &
+    mass_matrix() const;
+    const dealii::PETScWrappers::MPI::SparseMatrix &
+    stiffness_matrix() const;
+
+    /// A distributed vector without ghosts.
+    dealii::PETScWrappers::MPI::Vector
+    create_vector() const;
+    /// A ghosted copy of @p vector (for evaluation on locally owned cells).
+    dealii::PETScWrappers::MPI::Vector
+    create_ghosted(const dealii::PETScWrappers::MPI::Vector &vector) const;
+
+  private:
+    const unsigned int fe_degree;
+
+    std::unique_ptr<dealii::FESystem<2>> fe;
+    std::unique_ptr<dealii::MappingQ<2>> mapping;
+    dealii::DoFHandler<2>                dof_handler;
+    dealii::IndexSet                     owned_dofs;
+    dealii::IndexSet                     relevant_dofs;
+    dealii::AffineConstraints<double>    constraints;
+
+    dealii::PETScWrappers::MPI::SparseMatrix mass;
+    dealii::PETScWrappers::MPI::SparseMatrix stiffness;
+  };
+} // namespace DiskImpact

@@ -1,0 +1,242 @@
+#include "geometry.h"
+
+#include "input_error.h"
+
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/manifold_lib.h>
+#include <deal.II/grid/tria_accessor.h>
+#include <deal.II/grid/tria_iterator.h>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+
+namespace DiskImpact
+{
+  using namespace dealii;
+
+  void
+  DiskGeometry::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Geometry");
+    {
+      prm.declare_entry("Radius",
+                        "1",
+                        Patterns::Double(),
+                        "Disk radius R [length]. Must be positive. The disk's "
+                        "centre is at (R, 0): it touches the plane x = 0 at "
+                        "the origin.");
+      prm.declare_entry("Domain",
+                        "full disk",
+                        Patterns::Selection("full disk|half disk"),
+                        "'full disk', or 'half disk' (y >= 0, symmetric about "
+                        "the impact axis y = 0: only modes even about it).");
+      prm.declare_entry("Mesh file",
+                        "",
+                        Patterns::Anything(),
+                        "Empty: the built-in mesh (balanced ball). Otherwise "
+                        "a gmsh .msh file (see meshes/disk.geo) with boundary "
+                        "id 1 on the curved edge and 2 on the symmetry line; "
+                        "it must match 'Radius' and 'Domain'.");
+      prm.declare_entry("Global refinements",
+                        "3",
+                        Patterns::Integer(0, 12),
+                        "Number of uniform refinements of the coarse mesh.");
+      prm.declare_entry("Contact refinements",
+                        "0",
+                        Patterns::Integer(0, 20),
+                        "Extra refinement steps toward the contact point "
+                        "(0, 0): step i refines the cells closer than "
+                        "R / 2^i to it.");
+    }
+    prm.leave_subsection();
+  }
+
+  void
+  DiskGeometry::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Geometry");
+    disk_radius           = prm.get_double("Radius");
+    half_disk             = prm.get("Domain") == "half disk";
+    mesh_file             = prm.get("Mesh file");
+    n_global_refinements  = prm.get_integer("Global refinements");
+    n_contact_refinements = prm.get_integer("Contact refinements");
+    prm.leave_subsection();
+
+    require(disk_radius > 0,
+            "Geometry: 'Radius' must be positive, got " +
+              std::to_string(disk_radius));
+    if (!mesh_file.empty())
+      require(std::filesystem::is_regular_file(mesh_file),
+              "Geometry: mesh file '" + mesh_file + "' does not exist");
+  }
+
+  double
+  DiskGeometry::radius() const
+  {
+    return disk_radius;
+  }
+
+  bool
+  DiskGeometry::is_half_disk() const
+  {
+    return half_disk;
+  }
+
+  Point<2>
+  DiskGeometry::center() const
+  {
+    return Point<2>(disk_radius, 0.);
+  }
+
+  Point<2>
+  DiskGeometry::contact_point() const
+  {
+    return Point<2>(0., 0.);
+  }
+
+  unsigned int
+  DiskGeometry::global_refinements() const
+  {
+    return n_global_refinements;
+  }
+
+  void
+  DiskGeometry::set_global_refinements(const unsigned int n)
+  {
+    n_global_refinements = n;
+  }
+
+  std::string
+  DiskGeometry::description() const
+  {
+    return std::string(half_disk ? "half disk" : "full disk") + ", R = " +
+           std::to_string(disk_radius) + ", " +
+           (mesh_file.empty() ? "built-in mesh" : "mesh file " + mesh_file) +
+           ", " + std::to_string(n_global_refinements) +
+           " global refinements, " + std::to_string(n_contact_refinements) +
+           " contact refinements";
+  }
+
+  void
+  DiskGeometry::create_triangulation(Triangulation<2> &triangulation) const
+  {
+    if (mesh_file.empty())
+      create_builtin_coarse_mesh(triangulation);
+    else
+      read_coarse_mesh(triangulation);
+    set_boundary_and_manifold_ids(triangulation);
+    triangulation.set_manifold(curved_manifold_id,
+                               SphericalManifold<2>(center()));
+    triangulation.refine_global(n_global_refinements);
+    refine_toward_contact_point(triangulation);
+  }
+
+  void
+  DiskGeometry::create_builtin_coarse_mesh(
+    Triangulation<2> &triangulation) const
+  {
+    if (!half_disk)
+      {
+        GridGenerator::hyper_ball_balanced(triangulation,
+                                           center(),
+                                           disk_radius);
+        return;
+      }
+    // The balanced ball has cell edges on the diameter y = 0: drop the
+    // lower half.
+    Triangulation<2> full;
+    GridGenerator::hyper_ball_balanced(full, center(), disk_radius);
+    std::set<Triangulation<2>::active_cell_iterator> lower_half;
+    for (const auto &cell : full.active_cell_iterators())
+      if (cell->center()[1] < 0.)
+        lower_half.insert(cell);
+    GridGenerator::create_triangulation_with_removed_cells(full,
+                                                           lower_half,
+                                                           triangulation);
+  }
+
+  void
+  DiskGeometry::read_coarse_mesh(Triangulation<2> &triangulation) const
+  {
+    std::ifstream in(mesh_file);
+    require(static_cast<bool>(in),
+            "Geometry: cannot open mesh file '" + mesh_file + "'");
+    GridIn<2> grid_in;
+    grid_in.attach_triangulation(triangulation);
+    try
+      {
+        grid_in.read_msh(in);
+      }
+    catch (const std::exception &e)
+      {
+        throw InputError("Geometry: cannot read gmsh file '" + mesh_file +
+                         "' (a 2D quadrilateral mesh in msh format 2.2 is "
+                         "expected)");
+      }
+  }
+
+  void
+  DiskGeometry::set_boundary_and_manifold_ids(
+    Triangulation<2> &triangulation) const
+  {
+    // Built-in meshes and gmsh files alike: a boundary face is on the curved
+    // edge if its vertices lie on the circle, else on the symmetry line.
+    const double tolerance = 1e-8 * disk_radius;
+    triangulation.set_all_manifold_ids(numbers::flat_manifold_id);
+    unsigned int n_curved = 0, n_symmetry = 0;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary())
+          {
+            const bool on_circle =
+              std::abs(face->vertex(0).distance(center()) - disk_radius) <
+                tolerance &&
+              std::abs(face->vertex(1).distance(center()) - disk_radius) <
+                tolerance;
+            const bool on_axis = std::abs(face->vertex(0)[1]) < tolerance &&
+                                 std::abs(face->vertex(1)[1]) < tolerance;
+            if (on_circle)
+              {
+                face->set_boundary_id(BoundaryIds::curved);
+                face->set_manifold_id(curved_manifold_id);
+                ++n_curved;
+              }
+            else if (on_axis && half_disk)
+              {
+                face->set_boundary_id(BoundaryIds::symmetry);
+                ++n_symmetry;
+              }
+            else
+              throw InputError(
+                "Geometry: a boundary face of the mesh is neither on the "
+                "circle of radius 'Radius' centred at (R, 0) nor on the "
+                "symmetry line of a half disk: check 'Radius', 'Domain' and "
+                "the mesh file");
+          }
+    require(n_curved > 0, "Geometry: the mesh has no curved boundary");
+    require(!half_disk || n_symmetry > 0,
+            "Geometry: 'Domain = half disk' but the mesh has no symmetry "
+            "line on y = 0");
+  }
+
+  void
+  DiskGeometry::refine_toward_contact_point(
+    Triangulation<2> &triangulation) const
+  {
+    for (unsigned int step = 1; step <= n_contact_refinements; ++step)
+      {
+        const double distance = disk_radius / std::pow(2., step);
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->is_locally_owned())
+            for (const unsigned int v : cell->vertex_indices())
+              if (cell->vertex(v).distance(contact_point()) < distance)
+                {
+                  cell->set_refine_flag();
+                  break;
+                }
+        triangulation.execute_coarsening_and_refinement();
+      }
+  }
+} // namespace DiskImpact

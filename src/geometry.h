@@ -1,0 +1,81 @@
+#pragma once
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+
+#include <deal.II/grid/tria.h>
+
+#include <string>
+
+namespace DiskImpact
+{
+  /**
+   * Boundary ids of the disk (built-in meshes and meshes/disk.geo alike):
+   * the curved edge (free, or in contact with the wall) and the diameter on
+   * the impact axis (half disk only, symmetry: u_y = 0).
+   */
+  namespace BoundaryIds
+  {
+    constexpr dealii::types::boundary_id curved   = 1;
+    constexpr dealii::types::boundary_id symmetry = 2;
+  } // namespace BoundaryIds
+
+  /// Manifold id of the curved edge.
+  constexpr dealii::types::manifold_id curved_manifold_id = 1;
+
+  /**
+   * The disk: radius, full or half domain, built-in or gmsh mesh, global
+   * refinement and graded refinement toward the contact point.
+   *
+   * The disk's centre is (R, 0), so the undeformed disk touches the plane
+   * x = 0 at the contact point (0, 0); the impact axis is y = 0 and the
+   * half disk is y >= 0.
+   */
+  class DiskGeometry
+  {
+  public:
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    double
+    radius() const;
+    bool
+    is_half_disk() const;
+    dealii::Point<2>
+    center() const;
+    dealii::Point<2>
+    contact_point() const;
+    unsigned int
+    global_refinements() const;
+    void
+    set_global_refinements(unsigned int n);
+
+    /// Build the coarse mesh, attach the manifold and refine.
+    void
+    create_triangulation(dealii::Triangulation<2> &triangulation) const;
+
+    /// One line describing the mesh source and refinement.
+    std::string
+    description() const;
+
+  private:
+    void
+    create_builtin_coarse_mesh(dealii::Triangulation<2> &triangulation) const;
+    void
+    read_coarse_mesh(dealii::Triangulation<2> &triangulation) const;
+    void
+    set_boundary_and_manifold_ids(
+      dealii::Triangulation<2> &triangulation) const;
+    void
+    refine_toward_contact_point(dealii::Triangulation<2> &triangulation) const;
+
+    double       disk_radius          = 1.;
+    bool         half_disk            = false;
+    std::string  mesh_file;
+    unsigned int n_global_refinements  = 3;
+    unsigned int n_contact_refinements = 0;
+  };
+} // namespace DiskImpact

@@ -1,0 +1,199 @@
+#include "material.h"
+
+#include "input_error.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace DiskImpact
+{
+  using namespace dealii;
+
+  void
+  Material::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Material");
+    {
+      prm.declare_entry("Plane model",
+                        "plane strain",
+                        Patterns::Selection("plane strain|plane stress"),
+                        "'plane strain' (long cylinder; Young modulus and "
+                        "Poisson ratio are the 3D constants) or 'plane "
+                        "stress' (thin plate; the constants are the in-plane "
+                        "ones).");
+      prm.declare_entry("Young modulus",
+                        "1",
+                        Patterns::Double(),
+                        "Young modulus E [force/area]: the 3D value for "
+                        "plane strain, the in-plane value for plane stress. "
+                        "Must be positive.");
+      prm.declare_entry("Poisson ratio",
+                        "0.3",
+                        Patterns::Double(),
+                        "Poisson ratio nu [-]: -1 < nu < 0.5 for plane strain, "
+                        "-1 < nu <= 0.5 for plane stress.");
+      prm.declare_entry("Density",
+                        "1",
+                        Patterns::Double(),
+                        "Mass density rho [mass/area, i.e. per unit "
+                        "thickness]. Must be positive.");
+      prm.declare_entry("Relaxation time",
+                        "0",
+                        Patterns::Double(),
+                        "Kelvin-Voigt relaxation time tau [time]: "
+                        "sigma = C:eps + tau C:eps_dot. 0 is purely elastic; "
+                        "must not be negative.");
+    }
+    prm.leave_subsection();
+  }
+
+  void
+  Material::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Material");
+    const PlaneModel m = prm.get("Plane model") == "plane strain" ?
+                           PlaneModel::plane_strain :
+                           PlaneModel::plane_stress;
+    set(m,
+        prm.get_double("Young modulus"),
+        prm.get_double("Poisson ratio"),
+        prm.get_double("Density"),
+        prm.get_double("Relaxation time"));
+    prm.leave_subsection();
+  }
+
+  void
+  Material::set(const PlaneModel plane_model,
+                const double     young_modulus,
+                const double     poisson_ratio,
+                const double     density,
+                const double     relaxation_time)
+  {
+    require(young_modulus > 0,
+            "Material: 'Young modulus' must be positive, got " +
+              std::to_string(young_modulus));
+    require(density > 0,
+            "Material: 'Density' must be positive, got " +
+              std::to_string(density));
+    require(relaxation_time >= 0,
+            "Material: 'Relaxation time' must not be negative, got " +
+              std::to_string(relaxation_time));
+    if (plane_model == PlaneModel::plane_strain)
+      require(poisson_ratio > -1 && poisson_ratio < 0.5,
+              "Material: 'Poisson ratio' must satisfy -1 < nu < 0.5 in plane "
+              "strain (the plane-strain stiffness is infinite at nu = 0.5), "
+              "got " +
+                std::to_string(poisson_ratio));
+    else
+      require(poisson_ratio > -1 && poisson_ratio <= 0.5,
+              "Material: 'Poisson ratio' must satisfy -1 < nu <= 0.5 in "
+              "plane stress, got " +
+                std::to_string(poisson_ratio));
+    model          = plane_model;
+    young          = young_modulus;
+    poisson        = poisson_ratio;
+    rho            = density;
+    relaxation_tau = relaxation_time;
+  }
+
+  PlaneModel
+  Material::plane_model() const
+  {
+    return model;
+  }
+
+  std::string
+  Material::plane_model_name() const
+  {
+    return model == PlaneModel::plane_strain ? "plane strain" : "plane stress";
+  }
+
+  double
+  Material::density() const
+  {
+    return rho;
+  }
+
+  double
+  Material::relaxation_time() const
+  {
+    return relaxation_tau;
+  }
+
+  double
+  Material::in_plane_young_modulus() const
+  {
+    return model == PlaneModel::plane_strain ? young / (1. - poisson * poisson) :
+                                               young;
+  }
+
+  double
+  Material::in_plane_poisson_ratio() const
+  {
+    return model == PlaneModel::plane_strain ? poisson / (1. - poisson) :
+                                               poisson;
+  }
+
+  double
+  Material::shear_modulus() const
+  {
+    return in_plane_young_modulus() / (2. * (1. + in_plane_poisson_ratio()));
+  }
+
+  double
+  Material::lame_lambda() const
+  {
+    const double nu2 = in_plane_poisson_ratio();
+    return in_plane_young_modulus() * nu2 / (1. - nu2 * nu2);
+  }
+
+  SymmetricTensor<4, 2>
+  Material::stiffness_tensor() const
+  {
+    const double          mu     = shear_modulus();
+    const double          lambda = lame_lambda();
+    SymmetricTensor<4, 2> c;
+    for (unsigned int i = 0; i < 2; ++i)
+      for (unsigned int j = 0; j < 2; ++j)
+        for (unsigned int k = 0; k < 2; ++k)
+          for (unsigned int l = 0; l < 2; ++l)
+            c[i][j][k][l] = lambda * (i == j) * (k == l) +
+                            mu * ((i == k) * (j == l) + (i == l) * (j == k));
+    return c;
+  }
+
+  double
+  Material::longitudinal_wave_speed() const
+  {
+    return std::sqrt((lame_lambda() + 2. * shear_modulus()) / rho);
+  }
+
+  double
+  Material::transverse_wave_speed() const
+  {
+    return std::sqrt(shear_modulus() / rho);
+  }
+
+  double
+  Material::velocity_unit() const
+  {
+    return std::sqrt(in_plane_young_modulus() / rho);
+  }
+
+  void
+  Material::print_summary(ConditionalOStream &out) const
+  {
+    std::ostringstream s;
+    s.precision(10);
+    s << "Material: " << plane_model_name() << ", E = " << young
+      << ", nu = " << poisson << ", rho = " << rho
+      << ", relaxation time = " << relaxation_tau << '\n'
+      << "  in-plane constants: E2 = " << in_plane_young_modulus()
+      << ", nu2 = " << in_plane_poisson_ratio() << ", mu = " << shear_modulus()
+      << ", lambda2 = " << lame_lambda() << '\n'
+      << "  wave speeds: c_L = " << longitudinal_wave_speed()
+      << ", c_T = " << transverse_wave_speed()
+      << ", velocity unit c = sqrt(E2/rho) = " << velocity_unit() << '\n';
+    out << s.str();
+  }
+} // namespace DiskImpact

@@ -1,0 +1,86 @@
+#pragma once
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <string>
+
+namespace DiskImpact
+{
+  /// How the two-dimensional disk is obtained from a three-dimensional body.
+  enum class PlaneModel
+  {
+    plane_strain,
+    plane_stress
+  };
+
+  /**
+   * A linear elastic (optionally Kelvin-Voigt) isotropic material in two
+   * dimensions. Plane strain with the 3D constants (E, nu) has the same
+   * equations as plane stress with the in-plane constants
+   * E2 = E / (1 - nu^2), nu2 = nu / (1 - nu) (seed 001, eq. 2); everything
+   * below is expressed through the in-plane constants.
+   */
+  class Material
+  {
+  public:
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    /// Set the constants directly (as parse_parameters() does), with checks.
+    void
+    set(PlaneModel model,
+        double     young_modulus,
+        double     poisson_ratio,
+        double     density,
+        double     relaxation_time = 0.);
+
+    PlaneModel
+    plane_model() const;
+    std::string
+    plane_model_name() const;
+    double
+    density() const;
+    double
+    relaxation_time() const;
+
+    /// In-plane Young modulus E2 and Poisson ratio nu2 (seed 001, eq. 2).
+    double
+    in_plane_young_modulus() const;
+    double
+    in_plane_poisson_ratio() const;
+
+    /// Lame constants of the two-dimensional problem.
+    double
+    shear_modulus() const;
+    double
+    lame_lambda() const;
+
+    /// sigma = C : eps.
+    dealii::SymmetricTensor<4, 2>
+    stiffness_tensor() const;
+
+    /// Longitudinal and transverse wave speeds, and the seed's velocity unit
+    /// c = sqrt(E2 / rho).
+    double
+    longitudinal_wave_speed() const;
+    double
+    transverse_wave_speed() const;
+    double
+    velocity_unit() const;
+
+    /// Print the model, the input and the derived constants.
+    void
+    print_summary(dealii::ConditionalOStream &out) const;
+
+  private:
+    PlaneModel model           = PlaneModel::plane_strain;
+    double     young           = 1.;
+    double     poisson         = 0.3;
+    double     rho             = 1.;
+    double     relaxation_tau  = 0.;
+  };
+} // namespace DiskImpact

@@ -1,0 +1,227 @@
+#include "modal_analysis.h"
+
+#include "csv_table.h"
+
+#include <deal.II/base/utilities.h>
+
+#include <deal.II/grid/grid_tools.h>
+
+#include <deal.II/numerics/data_out.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace DiskImpact
+{
+  using namespace dealii;
+
+  bool
+  ModeResult::is_rigid() const
+  {
+    return label.family == Reference::ModeFamily::rigid;
+  }
+
+  double
+  ModeResult::relative_error() const
+  {
+    return omega / omega_exact - 1.;
+  }
+
+  ModalAnalysis::ModalAnalysis(const DiskGeometry       &geometry,
+                               const Material           &material,
+                               unsigned int              fe_degree,
+                               const ModalSolver        &solver,
+                               MPI_Comm                  communicator,
+                               TimerOutput              &timer)
+    : geometry(geometry)
+    , material(material)
+    , solver(solver)
+    , communicator(communicator)
+    , timer(timer)
+    , triangulation(communicator,
+                    Triangulation<2>::limit_level_difference_at_vertices)
+    , op(fe_degree)
+  {
+    TimerOutput::Scope scope(timer, "mesh and setup");
+    geometry.create_triangulation(triangulation);
+    op.setup(triangulation, geometry);
+  }
+
+  types::global_dof_index
+  ModalAnalysis::n_dofs() const
+  {
+    return op.get_dof_handler().n_dofs();
+  }
+
+  double
+  ModalAnalysis::mesh_size() const
+  {
+    return GridTools::maximal_cell_diameter(triangulation, op.get_mapping());
+  }
+
+  unsigned int
+  ModalAnalysis::n_cells() const
+  {
+    return triangulation.n_global_active_cells();
+  }
+
+  std::vector<ModeResult>
+  ModalAnalysis::run(const unsigned int n_elastic)
+  {
+    {
+      TimerOutput::Scope scope(timer, "assembly");
+      op.assemble(material);
+    }
+    // Eigenvalues in units of (c_T / R)^2: the rigid-body modes lie many
+    // orders below 1, the lowest elastic mode (2,0) near 1.
+    const double scale =
+      std::pow(material.transverse_wave_speed() / geometry.radius(), 2);
+    op.move_constrained_eigenvalues(1e10 * scale);
+
+    const unsigned int n_rigid = geometry.is_half_disk() ? 1 : 3;
+    {
+      TimerOutput::Scope scope(timer, "eigensolver");
+      basis = solver.solve(op, n_rigid + n_elastic + 1, -scale);
+    }
+
+    TimerOutput::Scope           scope(timer, "labelling");
+    std::vector<HarmonicContent> harmonics;
+    const unsigned int n_max_order = 8 + n_elastic / 2;
+    for (const auto &mode : basis.modes)
+      harmonics.push_back(compute_boundary_harmonics(
+        op, geometry, op.create_ghosted(mode), n_max_order));
+    const auto labels = label_modes(basis.eigenvalues,
+                                    harmonics,
+                                    1e-6 * scale,
+                                    geometry.is_half_disk());
+
+    const Reference::FreeDiskModes reference(
+      material.in_plane_poisson_ratio(),
+      material.longitudinal_wave_speed(),
+      geometry.radius());
+    std::vector<ModeResult> modes;
+    unsigned int            n_elastic_found = 0;
+    for (unsigned int i = 0; i < labels.size(); ++i)
+      {
+        ModeResult mode;
+        mode.index             = i;
+        mode.omega             = basis.omega(i);
+        mode.label             = labels[i].label;
+        mode.harmonic_fraction = labels[i].harmonic_fraction;
+        if (!mode.is_rigid())
+          {
+            mode.omega_exact = reference.omega(mode.label);
+            // Keep the extra mode only if it completes the last pair.
+            if (n_elastic_found == n_elastic &&
+                !(mode.label == modes.back().label))
+              break;
+            ++n_elastic_found;
+          }
+        modes.push_back(mode);
+      }
+    return modes;
+  }
+
+  void
+  ModalAnalysis::write_modes_csv(const std::vector<ModeResult> &modes,
+                                 const std::string             &filename)
+  {
+    CsvTable table({"index",
+                    "omega",
+                    "n",
+                    "l",
+                    "family",
+                    "omega_exact",
+                    "relative_error",
+                    "boundary_harmonic_fraction"});
+    for (const auto &mode : modes)
+      {
+        table.start_row();
+        table.add(mode.index);
+        table.add(mode.omega);
+        table.add(mode.label.n);
+        if (mode.is_rigid())
+          {
+            table.add_empty();
+            table.add(to_string(mode.label.family));
+            table.add_empty();
+            table.add_empty();
+          }
+        else
+          {
+            table.add(mode.label.l);
+            table.add(to_string(mode.label.family));
+            table.add(mode.omega_exact);
+            table.add(mode.relative_error());
+          }
+        table.add(mode.harmonic_fraction);
+      }
+    table.write(filename);
+  }
+
+  void
+  ModalAnalysis::write_mode_shapes(const std::vector<ModeResult> &modes,
+                                   const std::string &directory) const
+  {
+    // One file, one vector field per mode ("mode_007"), so the mesh and the
+    // curved patches are built once.
+    const std::vector<DataComponentInterpretation::DataComponentInterpretation>
+                       vector_field(2,
+                     DataComponentInterpretation::component_is_part_of_vector);
+    DataOut<2>                              data_out;
+    std::vector<PETScWrappers::MPI::Vector> ghosted;
+    data_out.attach_dof_handler(op.get_dof_handler());
+    for (const auto &mode : modes)
+      ghosted.push_back(op.create_ghosted(basis.modes[mode.index]));
+    for (unsigned int i = 0; i < modes.size(); ++i)
+      data_out.add_data_vector(
+        ghosted[i],
+        std::vector<std::string>(2,
+                                 "mode_" + Utilities::int_to_string(
+                                             modes[i].index, 3)),
+        DataOut<2>::type_dof_data,
+        vector_field);
+    data_out.build_patches(op.get_mapping(),
+                           op.degree(),
+                           DataOut<2>::curved_inner_cells);
+    DataOutBase::VtkFlags flags;
+    flags.compression_level = DataOutBase::VtkFlags::ZlibCompressionLevel::best_speed;
+    data_out.set_flags(flags);
+    const std::string name = data_out.write_vtu_with_pvtu_record(
+      directory + "/", "modes", 0, communicator, 1);
+    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+      {
+        std::ofstream pvd(directory + "/modes.pvd");
+        DataOutBase::write_pvd_record(pvd, {{0., name}});
+      }
+  }
+
+  void
+  ModalAnalysis::print_table(const std::vector<ModeResult> &modes,
+                             ConditionalOStream            &out)
+  {
+    std::ostringstream s;
+    s << " mode   n   l  family          omega (FE)       omega (Bessel)"
+         "   rel. error\n";
+    for (const auto &mode : modes)
+      {
+        s << std::setw(5) << mode.index << std::setw(4) << mode.label.n;
+        if (mode.is_rigid())
+          s << "   -  " << std::left << std::setw(10) << "rigid" << std::right
+            << std::scientific << std::setprecision(3) << std::setw(17)
+            << mode.omega << '\n';
+        else
+          s << std::setw(4) << mode.label.l << "  " << std::left
+            << std::setw(10) << to_string(mode.label.family) << std::right
+            << std::fixed << std::setprecision(12) << std::setw(17)
+            << mode.omega << std::setw(21) << mode.omega_exact
+            << std::scientific << std::setprecision(2) << std::setw(13)
+            << mode.relative_error() << '\n';
+        s.unsetf(std::ios_base::floatfield);
+      }
+    out << s.str();
+  }
+} // namespace DiskImpact

@@ -1,0 +1,156 @@
+#include "modal_solver.h"
+
+#include "elasticity_operator.h"
+
+#include <slepceps.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+
+namespace DiskImpact
+{
+  using namespace dealii;
+
+  namespace
+  {
+    void
+    check(const PetscErrorCode code, const char *call)
+    {
+      if (code != 0)
+        throw std::runtime_error(std::string("SLEPc/PETSc call ") + call +
+                                 " failed with error code " +
+                                 std::to_string(code));
+    }
+  } // namespace
+
+  double
+  ModalBasis::omega(const unsigned int i) const
+  {
+    return std::sqrt(std::max(eigenvalues[i], 0.));
+  }
+
+  void
+  ModalSolver::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Modal analysis");
+    prm.declare_entry("Number of modes",
+                      "40",
+                      Patterns::Integer(1, 2000),
+                      "Number of elastic modes wanted; the rigid-body modes "
+                      "come in addition.");
+    prm.declare_entry("Eigensolver tolerance",
+                      "1e-10",
+                      Patterns::Double(1e-16, 1e-4),
+                      "Relative residual tolerance |K x - lambda M x| / "
+                      "|lambda| of the eigensolver [-]. The eigenvalue error "
+                      "is of the order of its square.");
+    prm.leave_subsection();
+  }
+
+  void
+  ModalSolver::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Modal analysis");
+    n_modes            = prm.get_integer("Number of modes");
+    relative_tolerance = prm.get_double("Eigensolver tolerance");
+    prm.leave_subsection();
+  }
+
+  unsigned int
+  ModalSolver::n_elastic_modes() const
+  {
+    return n_modes;
+  }
+
+  void
+  ModalSolver::set_n_elastic_modes(const unsigned int n)
+  {
+    n_modes = n;
+  }
+
+  double
+  ModalSolver::tolerance() const
+  {
+    return relative_tolerance;
+  }
+
+  ModalBasis
+  ModalSolver::solve(const ElasticityOperator &op,
+                     const unsigned int        n_wanted,
+                     const double              shift) const
+  {
+    const Mat stiffness = op.stiffness_matrix();
+    const Mat mass      = op.mass_matrix();
+    check(MatSetOption(stiffness, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
+    check(MatSetOption(mass, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
+
+    EPS eps;
+    check(EPSCreate(op.get_dof_handler().get_communicator(), &eps),
+          "EPSCreate");
+    check(EPSSetOperators(eps, stiffness, mass), "EPSSetOperators");
+    check(EPSSetProblemType(eps, EPS_GHEP), "EPSSetProblemType");
+    check(EPSSetType(eps, EPSKRYLOVSCHUR), "EPSSetType");
+    check(EPSSetDimensions(eps, n_wanted, PETSC_DEFAULT, PETSC_DEFAULT),
+          "EPSSetDimensions");
+    check(EPSSetTolerances(eps, relative_tolerance, 1000), "EPSSetTolerances");
+    check(EPSSetConvergenceTest(eps, EPS_CONV_REL), "EPSSetConvergenceTest");
+    check(EPSSetTarget(eps, shift), "EPSSetTarget");
+    check(EPSSetWhichEigenpairs(eps, EPS_TARGET_REAL),
+          "EPSSetWhichEigenpairs");
+
+    // Shift-and-invert: (K - shift M)^{-1} M, the shifted matrix factorized
+    // once by MUMPS (M's sparsity pattern is a subset of K's).
+    ST  st;
+    KSP ksp;
+    PC  pc;
+    check(EPSGetST(eps, &st), "EPSGetST");
+    check(STSetType(st, STSINVERT), "STSetType");
+    check(STSetMatStructure(st, SUBSET_NONZERO_PATTERN), "STSetMatStructure");
+    check(STGetKSP(st, &ksp), "STGetKSP");
+    check(KSPSetType(ksp, KSPPREONLY), "KSPSetType");
+    check(KSPGetPC(ksp, &pc), "KSPGetPC");
+    check(PCSetType(pc, PCCHOLESKY), "PCSetType");
+    check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS),
+          "PCFactorSetMatSolverType");
+    check(EPSSetFromOptions(eps), "EPSSetFromOptions");
+
+    check(EPSSolve(eps), "EPSSolve");
+    PetscInt n_converged = 0;
+    check(EPSGetConverged(eps, &n_converged), "EPSGetConverged");
+    if (n_converged < static_cast<PetscInt>(n_wanted))
+      throw std::runtime_error("the eigensolver converged " +
+                               std::to_string(n_converged) + " of " +
+                               std::to_string(n_wanted) + " eigenpairs");
+
+    std::vector<double>                     values(n_converged);
+    std::vector<PETScWrappers::MPI::Vector> vectors;
+    for (PetscInt i = 0; i < n_converged; ++i)
+      {
+        vectors.push_back(op.create_vector());
+        PetscScalar real, imaginary;
+        check(EPSGetEigenpair(
+                eps, i, &real, &imaginary, vectors.back(), nullptr),
+              "EPSGetEigenpair");
+        values[i] = PetscRealPart(real);
+      }
+    check(EPSDestroy(&eps), "EPSDestroy");
+
+    // SLEPc may return more pairs than asked for, not always sorted.
+    std::vector<unsigned int> order(n_converged);
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&](unsigned int a, unsigned int b) {
+      return values[a] < values[b];
+    });
+    ModalBasis basis;
+    for (unsigned int i = 0; i < n_wanted; ++i)
+      {
+        basis.eigenvalues.push_back(values[order[i]]);
+        basis.modes.push_back(std::move(vectors[order[i]]));
+        op.get_constraints().distribute(basis.modes.back());
+      }
+    return basis;
+  }
+} // namespace DiskImpact

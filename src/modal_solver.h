@@ -1,0 +1,61 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <deal.II/lac/petsc_vector.h>
+
+#include <vector>
+
+namespace DiskImpact
+{
+  class ElasticityOperator;
+
+  /// Eigenpairs K phi = omega^2 M phi, ascending, phi M-orthonormal.
+  struct ModalBasis
+  {
+    std::vector<double>                             eigenvalues;
+    std::vector<dealii::PETScWrappers::MPI::Vector> modes;
+
+    /// omega = sqrt(max(lambda, 0)).
+    double
+    omega(unsigned int i) const;
+  };
+
+  /**
+   * The lowest eigenpairs of the free disk, K phi = omega^2 M phi, with
+   * SLEPc's Krylov-Schur solver and shift-and-invert about a negative
+   * shift (K is singular on a free body), the shifted matrix factorized by
+   * MUMPS. SLEPc's own options (-eps_*, -st_*, e.g. through PETSC_OPTIONS)
+   * still apply.
+   */
+  class ModalSolver
+  {
+  public:
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    /// Elastic modes wanted (rigid-body modes come in addition).
+    unsigned int
+    n_elastic_modes() const;
+    void
+    set_n_elastic_modes(unsigned int n);
+    double
+    tolerance() const;
+
+    /**
+     * The lowest @p n_wanted eigenpairs of @p op, whose matrices must be
+     * assembled. @p shift is the (negative) shift of the spectral
+     * transformation.
+     */
+    ModalBasis
+    solve(const ElasticityOperator &op,
+          unsigned int              n_wanted,
+          double                    shift) const;
+
+  private:
+    unsigned int n_modes            = 40;
+    double       relative_tolerance = 1e-10;
+  };
+} // namespace DiskImpact

@@ -1,0 +1,149 @@
+#include "mode_labelling.h"
+
+#include "elasticity_operator.h"
+#include "geometry.h"
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+
+namespace DiskImpact
+{
+  using namespace dealii;
+
+  unsigned int
+  HarmonicContent::dominant_order() const
+  {
+    unsigned int best = 0;
+    for (unsigned int n = 1; n < radial_power.size(); ++n)
+      if (radial_power[n] + tangential_power[n] >
+          radial_power[best] + tangential_power[best])
+        best = n;
+    return best;
+  }
+
+  double
+  HarmonicContent::dominant_fraction() const
+  {
+    const double total =
+      std::accumulate(radial_power.begin(), radial_power.end(), 0.) +
+      std::accumulate(tangential_power.begin(), tangential_power.end(), 0.);
+    const unsigned int n = dominant_order();
+    return total > 0 ? (radial_power[n] + tangential_power[n]) / total : 0.;
+  }
+
+  HarmonicContent
+  compute_boundary_harmonics(const ElasticityOperator         &op,
+                             const DiskGeometry               &geometry,
+                             const PETScWrappers::MPI::Vector &displacement,
+                             const unsigned int                n_max)
+  {
+    const unsigned int n_orders = n_max + 1;
+    // Per order: <u_r,cos>, <u_r,sin>, <u_phi,cos>, <u_phi,sin>, <cos,cos>,
+    // <sin,sin> over the edge, with d(phi) = ds / R.
+    std::vector<double> sums(6 * n_orders, 0.);
+
+    const unsigned int  degree = op.get_dof_handler().get_fe().degree;
+    const QGauss<1>     quadrature(degree + 3);
+    FEFaceValues<2>     face_values(op.get_mapping(),
+                                op.get_dof_handler().get_fe(),
+                                quadrature,
+                                update_values | update_quadrature_points |
+                                  update_JxW_values);
+    std::vector<Vector<double>> u(quadrature.size(), Vector<double>(2));
+    const Point<2>              center = geometry.center();
+
+    for (const auto &cell : op.get_dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              cell->face(f)->boundary_id() == BoundaryIds::curved)
+            {
+              face_values.reinit(cell, f);
+              face_values.get_function_values(displacement, u);
+              for (const unsigned int q : face_values.quadrature_point_indices())
+                {
+                  const Tensor<1, 2> x = face_values.quadrature_point(q) - center;
+                  const double       phi    = std::atan2(x[1], x[0]);
+                  const double       c      = std::cos(phi);
+                  const double       s      = std::sin(phi);
+                  const double       u_r    = u[q][0] * c + u[q][1] * s;
+                  const double       u_phi  = -u[q][0] * s + u[q][1] * c;
+                  const double       dphi   = face_values.JxW(q) / x.norm();
+                  for (unsigned int n = 0; n < n_orders; ++n)
+                    {
+                      const double cn = std::cos(n * phi) * dphi;
+                      const double sn = std::sin(n * phi) * dphi;
+                      double      *out = &sums[6 * n];
+                      out[0] += u_r * cn;
+                      out[1] += u_r * sn;
+                      out[2] += u_phi * cn;
+                      out[3] += u_phi * sn;
+                      out[4] += std::cos(n * phi) * cn;
+                      out[5] += std::sin(n * phi) * sn;
+                    }
+                }
+            }
+    Utilities::MPI::sum(sums, op.get_dof_handler().get_communicator(), sums);
+
+    // On the half circle cos(n phi) and sin(m phi) are not orthogonal; the
+    // half disk holds only the symmetric part, u_r in cos and u_phi in sin.
+    const bool      full_circle = !geometry.is_half_disk();
+    HarmonicContent content;
+    for (unsigned int n = 0; n < n_orders; ++n)
+      {
+        const double *in  = &sums[6 * n];
+        auto          cos_power = [&](const double a) { return a * a / in[4]; };
+        auto          sin_power = [&](const double b) {
+          return n > 0 ? b * b / in[5] : 0.;
+        };
+        content.radial_power.push_back(
+          cos_power(in[0]) + (full_circle ? sin_power(in[1]) : 0.));
+        content.tangential_power.push_back(
+          sin_power(in[3]) + (full_circle ? cos_power(in[2]) : 0.));
+      }
+    return content;
+  }
+
+  std::vector<LabelledMode>
+  label_modes(const std::vector<double>          &eigenvalues,
+              const std::vector<HarmonicContent> &harmonics,
+              const double                        rigid_eigenvalue,
+              const bool                          half_disk)
+  {
+    using Reference::ModeFamily;
+    const unsigned int orientations = half_disk ? 1 : 2;
+
+    std::map<std::pair<unsigned int, ModeFamily>, unsigned int> seen;
+    std::vector<LabelledMode>                                    labelled;
+    for (unsigned int i = 0; i < eigenvalues.size(); ++i)
+      {
+        LabelledMode mode;
+        const auto  &h               = harmonics[i];
+        const unsigned int n         = h.dominant_order();
+        mode.harmonic_fraction       = h.dominant_fraction();
+        mode.label.n                 = n;
+        if (eigenvalues[i] < rigid_eigenvalue)
+          mode.label.family = ModeFamily::rigid;
+        else if (n == 0)
+          mode.label.family = h.radial_power[0] >= h.tangential_power[0] ?
+                                ModeFamily::radial :
+                                ModeFamily::torsional;
+        else
+          mode.label.family = ModeFamily::mixed;
+
+        const unsigned int count = seen[{n, mode.label.family}]++;
+        mode.label.l = (n == 0 || mode.label.family == ModeFamily::rigid) ?
+                         count :
+                         count / orientations;
+        labelled.push_back(mode);
+      }
+    return labelled;
+  }
+} // namespace DiskImpact

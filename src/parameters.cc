@@ -1,0 +1,55 @@
+#include "parameters.h"
+
+#include "input_error.h"
+
+#include <filesystem>
+#include <regex>
+#include <sstream>
+
+namespace DiskImpact
+{
+  using namespace dealii;
+
+  void
+  Parameters::declare_parameters(ParameterHandler &prm)
+  {
+    RunParameters::declare_parameters(prm);
+    DiskGeometry::declare_parameters(prm);
+    Material::declare_parameters(prm);
+    FiniteElementParameters::declare_parameters(prm);
+    ModalSolver::declare_parameters(prm);
+    ModalConvergenceStudy::declare_parameters(prm);
+  }
+
+  void
+  Parameters::parse_parameters(ParameterHandler &prm)
+  {
+    run.parse_parameters(prm);
+    geometry.parse_parameters(prm);
+    material.parse_parameters(prm);
+    finite_element.parse_parameters(prm);
+    modal_solver.parse_parameters(prm);
+    modal_convergence.parse_parameters(prm);
+  }
+
+  void
+  read_parameter_file(ParameterHandler &prm, const std::string &filename)
+  {
+    require(std::filesystem::is_regular_file(filename),
+            "parameter file '" + filename + "' does not exist");
+    try
+      {
+        prm.parse_input(filename);
+      }
+    catch (const ExceptionBase &e)
+      {
+        // deal.II's message spans several lines: fold it into one.
+        std::ostringstream info;
+        e.print_info(info);
+        std::string message =
+          std::regex_replace(info.str(), std::regex("\\s+"), " ");
+        message = std::regex_replace(message, std::regex("^ | $"), "");
+        throw InputError("in parameter file '" + filename + "': " + message);
+      }
+  }
+} // namespace DiskImpact

@@ -1,0 +1,43 @@
+#pragma once
+
+#include "elasticity_operator.h"
+#include "geometry.h"
+#include "material.h"
+#include "modal_solver.h"
+#include "run_parameters.h"
+#include "tasks/modal_convergence_study.h"
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+
+namespace DiskImpact
+{
+  /**
+   * All parameters of a run. Each member declares and parses its own
+   * subsection; this struct only collects them.
+   */
+  struct Parameters
+  {
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    RunParameters                  run;
+    DiskGeometry                   geometry;
+    Material                       material;
+    FiniteElementParameters        finite_element;
+    ModalSolver                    modal_solver;
+    ModalConvergenceStudy          modal_convergence;
+  };
+
+  /**
+   * Read @p filename into @p prm. A missing file, an unknown or misspelled
+   * entry or a value that does not match its pattern throws an InputError
+   * with a one-line message naming the file, the line and the entry.
+   */
+  void
+  read_parameter_file(dealii::ParameterHandler &prm,
+                      const std::string        &filename);
+} // namespace DiskImpact

@@ -1,0 +1,30 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+
+namespace DiskImpact
+{
+  /// What a run computes.
+  enum class Task
+  {
+    modal_analysis,
+    modal_convergence
+  };
+
+  /**
+   * The top-level entries of a parameter file: which task to run and where
+   * its results go.
+   */
+  struct RunParameters
+  {
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    Task        task = Task::modal_analysis;
+    std::string output_directory;
+  };
+} // namespace DiskImpact

@@ -1,0 +1,197 @@
+#include "tasks/modal_convergence_study.h"
+
+#include "csv_table.h"
+#include "input_error.h"
+#include "modal_analysis.h"
+#include "parameters.h"
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <optional>
+#include <sstream>
+
+namespace DiskImpact
+{
+  using namespace dealii;
+
+  namespace
+  {
+    std::vector<unsigned int>
+    parse_unsigned_list(const std::string &text)
+    {
+      std::vector<unsigned int> values;
+      for (const int v : Utilities::string_to_int(
+             Utilities::split_string_list(text, ',')))
+        values.push_back(v);
+      return values;
+    }
+  } // namespace
+
+  void
+  ModalConvergenceStudy::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Modal convergence");
+    prm.declare_entry("Degrees",
+                      "1, 2, 3",
+                      Patterns::List(Patterns::Integer(1, 4), 1),
+                      "Element degrees k of the study.");
+    prm.declare_entry("Refinement levels",
+                      "1, 2, 3, 4",
+                      Patterns::List(Patterns::Integer(0, 10), 2),
+                      "Global refinements of the study's meshes, ascending "
+                      "(replaces 'Global refinements' of subsection "
+                      "Geometry).");
+    prm.declare_entry("Modes compared",
+                      "10",
+                      Patterns::Integer(1, 200),
+                      "Number of distinct analytic modes (n, l, family), "
+                      "lowest first, whose errors are tabulated.");
+    prm.leave_subsection();
+  }
+
+  void
+  ModalConvergenceStudy::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Modal convergence");
+    degrees           = parse_unsigned_list(prm.get("Degrees"));
+    refinement_levels = parse_unsigned_list(prm.get("Refinement levels"));
+    n_modes_compared  = prm.get_integer("Modes compared");
+    prm.leave_subsection();
+    require(std::is_sorted(refinement_levels.begin(),
+                           refinement_levels.end()) &&
+              std::adjacent_find(refinement_levels.begin(),
+                                 refinement_levels.end()) ==
+                refinement_levels.end(),
+            "Modal convergence: 'Refinement levels' must be strictly "
+            "ascending");
+  }
+
+  void
+  ModalConvergenceStudy::run(const Parameters &parameters,
+                             MPI_Comm          communicator) const
+  {
+    ConditionalOStream pcout(std::cout,
+                             Utilities::MPI::this_mpi_process(communicator) ==
+                               0);
+    TimerOutput timer(communicator, pcout, TimerOutput::never,
+                      TimerOutput::wall_times);
+
+    // The distinct analytic modes to follow, and how many computed modes
+    // (with multiplicity) it takes to reach the last of them.
+    const bool half = parameters.geometry.is_half_disk();
+    const Reference::FreeDiskModes reference(
+      parameters.material.in_plane_poisson_ratio(),
+      parameters.material.longitudinal_wave_speed(),
+      parameters.geometry.radius());
+    std::vector<Reference::ModeLabel> targets;
+    unsigned int                      n_elastic_needed = 0;
+    for (unsigned int count = n_modes_compared; targets.size() < n_modes_compared;
+         count *= 2)
+      {
+        targets.clear();
+        const auto lowest = reference.lowest_modes(count, half);
+        for (unsigned int i = 0; i < lowest.size(); ++i)
+          if (targets.size() < n_modes_compared &&
+              std::find(targets.begin(), targets.end(), lowest[i]) ==
+                targets.end())
+            {
+              targets.push_back(lowest[i]);
+              n_elastic_needed = i + 1;
+            }
+      }
+
+    CsvTable table({"degree",
+                    "refinements",
+                    "n_dofs",
+                    "h",
+                    "mode",
+                    "n",
+                    "l",
+                    "family",
+                    "omega",
+                    "omega_exact",
+                    "relative_error",
+                    "observed_order"});
+    std::ostringstream summary;
+    for (const unsigned int degree : degrees)
+      {
+        std::vector<std::optional<double>> previous_error(targets.size());
+        double                             previous_h = 0.;
+        for (const unsigned int level : refinement_levels)
+          {
+            DiskGeometry geometry = parameters.geometry;
+            geometry.set_global_refinements(level);
+            ModalAnalysis analysis(geometry,
+                                   parameters.material,
+                                   degree,
+                                   parameters.modal_solver,
+                                   communicator,
+                                   timer);
+            const auto   modes = analysis.run(n_elastic_needed);
+            const double h     = analysis.mesh_size();
+            pcout << "Q" << degree << ", " << level << " refinements, "
+                  << analysis.n_dofs() << " DoFs, h = " << h << std::endl;
+
+            for (unsigned int t = 0; t < targets.size(); ++t)
+              {
+                const auto match =
+                  std::find_if(modes.begin(), modes.end(), [&](const auto &m) {
+                    return m.label == targets[t];
+                  });
+                table.start_row();
+                table.add(degree);
+                table.add(level);
+                table.add(static_cast<long long>(analysis.n_dofs()));
+                table.add(h);
+                table.add(t);
+                table.add(targets[t].n);
+                table.add(targets[t].l);
+                table.add(to_string(targets[t].family));
+                std::optional<double> error;
+                if (match != modes.end())
+                  {
+                    error = match->relative_error();
+                    table.add(match->omega);
+                    table.add(match->omega_exact);
+                    table.add(*error);
+                  }
+                else
+                  {
+                    // No computed mode carries this label on this mesh.
+                    table.add_empty();
+                    table.add(reference.omega(targets[t]));
+                    table.add_empty();
+                  }
+                if (error && previous_error[t] && *error != 0.)
+                  {
+                    const double order =
+                      std::log(std::abs(*previous_error[t] / *error)) /
+                      std::log(previous_h / h);
+                    table.add(order);
+                    summary << "  Q" << degree << " level " << std::setw(2)
+                            << level << "  mode " << std::setw(2) << t << " ("
+                            << targets[t].n << "," << targets[t].l << ","
+                            << to_string(targets[t].family)
+                            << ")  error " << std::scientific
+                            << std::setprecision(3) << *error
+                            << "  order " << std::fixed << std::setprecision(2)
+                            << order << '\n';
+                  }
+                else
+                  table.add_empty();
+                previous_error[t] = error;
+              }
+            previous_h = h;
+          }
+      }
+    pcout << "Observed orders (expected 2k):\n" << summary.str();
+    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+      table.write(parameters.run.output_directory + "/modal_convergence.csv");
+    timer.print_summary();
+  }
+} // namespace DiskImpact
