@@ -18,7 +18,7 @@ max_error() { # largest |relative_error| of the first 20 elastic modes
   /usr/bin/python3 -c '
 import csv, sys
 rows = [r for r in csv.DictReader(open(sys.argv[1])) if r["family"] != "rigid"]
-print(f"{max(abs(float(r[\"relative_error\"])) for r in rows[:20]):.2e}")' "$1"
+print("%.2e" % max(abs(float(r["relative_error"])) for r in rows[:20]))' "$1"
 }
 section() { grep -E "^\| $1 " "$2" | awk -F'|' '{gsub(/ /,"",$4); print $4}'; }
 

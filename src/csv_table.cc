@@ -8,8 +8,9 @@
 namespace DiskImpact
 {
   CsvTable::CsvTable(const std::vector<std::string> &column_names)
-    : header(column_names)
-  {}
+      : header(column_names)
+  {
+  }
 
   void
   CsvTable::start_row()

@@ -40,8 +40,9 @@ namespace DiskImpact
   }
 
   ElasticityOperator::ElasticityOperator(const unsigned int degree)
-    : fe_degree(degree)
-  {}
+      : fe_degree(degree)
+  {
+  }
 
   unsigned int
   ElasticityOperator::degree() const
@@ -81,7 +82,7 @@ namespace DiskImpact
     // K couples the two displacement components, M does not: M gets its
     // own pattern, half as many entries (its products dominate the
     // eigensolver's time). M's pattern is a subset of K's.
-    const MPI_Comm comm = triangulation.get_communicator();
+    const MPI_Comm               comm = triangulation.get_communicator();
     Table<2, DoFTools::Coupling> all_components(2, 2), same_component(2, 2);
     all_components.fill(DoFTools::always);
     same_component.fill(DoFTools::none);
@@ -104,15 +105,14 @@ namespace DiskImpact
   void
   ElasticityOperator::assemble(const Material &material)
   {
-    const QGauss<2>     quadrature(fe_degree + 1);
-    FEValues<2>         fe_values(*mapping,
+    const QGauss<2>    quadrature(fe_degree + 1);
+    FEValues<2>        fe_values(*mapping,
                           *fe,
                           quadrature,
-                          update_values | update_gradients |
-                            update_JxW_values);
-    const unsigned int  dofs_per_cell = fe->n_dofs_per_cell();
-    FullMatrix<double>  cell_mass(dofs_per_cell, dofs_per_cell);
-    FullMatrix<double>  cell_stiffness(dofs_per_cell, dofs_per_cell);
+                          update_values | update_gradients | update_JxW_values);
+    const unsigned int dofs_per_cell = fe->n_dofs_per_cell();
+    FullMatrix<double> cell_mass(dofs_per_cell, dofs_per_cell);
+    FullMatrix<double> cell_stiffness(dofs_per_cell, dofs_per_cell);
     std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
     const FEValuesExtractors::Vector     displacement(0);
 

@@ -111,8 +111,8 @@ namespace DiskImpact
   std::string
   DiskGeometry::description() const
   {
-    return std::string(half_disk ? "half disk" : "full disk") + ", R = " +
-           std::to_string(disk_radius) + ", " +
+    return std::string(half_disk ? "half disk" : "full disk") +
+           ", R = " + std::to_string(disk_radius) + ", " +
            (mesh_file.empty() ? "built-in mesh" : "mesh file " + mesh_file) +
            ", " + std::to_string(n_global_refinements) +
            " global refinements, " + std::to_string(n_contact_refinements) +

@@ -72,8 +72,8 @@ namespace DiskImpact
     void
     refine_toward_contact_point(dealii::Triangulation<2> &triangulation) const;
 
-    double       disk_radius          = 1.;
-    bool         half_disk            = false;
+    double       disk_radius = 1.;
+    bool         half_disk   = false;
     std::string  mesh_file;
     unsigned int n_global_refinements  = 3;
     unsigned int n_contact_refinements = 0;

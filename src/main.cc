@@ -45,8 +45,8 @@ namespace
 
     dealii::ParameterHandler prm;
     Parameters::declare_parameters(prm);
-    const std::string file = print_only ? (args.size() == 2 ? args[1] : "") :
-                                          args[0];
+    const std::string file =
+      print_only ? (args.size() == 2 ? args[1] : "") : args[0];
     if (!file.empty())
       read_parameter_file(prm, file);
     Parameters parameters;
@@ -55,10 +55,11 @@ namespace
     if (print_only)
       {
         if (dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
-          prm.print_parameters(std::cout,
-                               dealii::ParameterHandler::OutputStyle(
-                                 dealii::ParameterHandler::PRM |
-                                 dealii::ParameterHandler::KeepDeclarationOrder));
+          prm.print_parameters(
+            std::cout,
+            dealii::ParameterHandler::OutputStyle(
+              dealii::ParameterHandler::PRM |
+              dealii::ParameterHandler::KeepDeclarationOrder));
         return 0;
       }
     run_task(parameters, prm, communicator);
@@ -70,7 +71,8 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool is_root = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  const bool                               is_root =
+    dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   // Errors are reported as one line on standard error.
   auto report = [is_root](const std::string &kind, const std::string &what) {
     if (is_root)

@@ -123,8 +123,9 @@ namespace DiskImpact
   double
   Material::in_plane_young_modulus() const
   {
-    return model == PlaneModel::plane_strain ? young / (1. - poisson * poisson) :
-                                               young;
+    return model == PlaneModel::plane_strain ?
+             young / (1. - poisson * poisson) :
+             young;
   }
 
   double

@@ -77,10 +77,10 @@ namespace DiskImpact
     print_summary(dealii::ConditionalOStream &out) const;
 
   private:
-    PlaneModel model           = PlaneModel::plane_strain;
-    double     young           = 1.;
-    double     poisson         = 0.3;
-    double     rho             = 1.;
-    double     relaxation_tau  = 0.;
+    PlaneModel model          = PlaneModel::plane_strain;
+    double     young          = 1.;
+    double     poisson        = 0.3;
+    double     rho            = 1.;
+    double     relaxation_tau = 0.;
   };
 } // namespace DiskImpact

@@ -18,6 +18,14 @@ namespace DiskImpact
 {
   using namespace dealii;
 
+  Reference::FreeDiskModes
+  analytic_disk_modes(const DiskGeometry &geometry, const Material &material)
+  {
+    return Reference::FreeDiskModes(material.in_plane_poisson_ratio(),
+                                    material.longitudinal_wave_speed(),
+                                    geometry.radius());
+  }
+
   bool
   ModeResult::is_rigid() const
   {
@@ -30,20 +38,20 @@ namespace DiskImpact
     return omega / omega_exact - 1.;
   }
 
-  ModalAnalysis::ModalAnalysis(const DiskGeometry       &geometry,
-                               const Material           &material,
-                               unsigned int              fe_degree,
-                               const ModalSolver        &solver,
-                               MPI_Comm                  communicator,
-                               TimerOutput              &timer)
-    : geometry(geometry)
-    , material(material)
-    , solver(solver)
-    , communicator(communicator)
-    , timer(timer)
-    , triangulation(communicator,
-                    Triangulation<2>::limit_level_difference_at_vertices)
-    , op(fe_degree)
+  ModalAnalysis::ModalAnalysis(const DiskGeometry &geometry,
+                               const Material     &material,
+                               unsigned int        fe_degree,
+                               const ModalSolver  &solver,
+                               MPI_Comm            communicator,
+                               TimerOutput        &timer)
+      : geometry(geometry)
+      , material(material)
+      , solver(solver)
+      , communicator(communicator)
+      , timer(timer)
+      , triangulation(communicator,
+                      Triangulation<2>::limit_level_difference_at_vertices)
+      , op(fe_degree)
   {
     TimerOutput::Scope scope(timer, "mesh and setup");
     geometry.create_triangulation(triangulation);
@@ -89,7 +97,7 @@ namespace DiskImpact
 
     TimerOutput::Scope           scope(timer, "labelling");
     std::vector<HarmonicContent> harmonics;
-    const unsigned int n_max_order = 8 + n_elastic / 2;
+    const unsigned int           n_max_order = 8 + n_elastic / 2;
     for (const auto &mode : basis.modes)
       harmonics.push_back(compute_boundary_harmonics(
         op, geometry, op.create_ghosted(mode), n_max_order));
@@ -98,10 +106,7 @@ namespace DiskImpact
                                     1e-6 * scale,
                                     geometry.is_half_disk());
 
-    const Reference::FreeDiskModes reference(
-      material.in_plane_poisson_ratio(),
-      material.longitudinal_wave_speed(),
-      geometry.radius());
+    const auto              reference = analytic_disk_modes(geometry, material);
     std::vector<ModeResult> modes;
     unsigned int            n_elastic_found = 0;
     for (unsigned int i = 0; i < labels.size(); ++i)
@@ -169,8 +174,7 @@ namespace DiskImpact
     // One file, one vector field per mode ("mode_007"), so the mesh and the
     // curved patches are built once.
     const std::vector<DataComponentInterpretation::DataComponentInterpretation>
-                       vector_field(2,
-                     DataComponentInterpretation::component_is_part_of_vector);
+      vector_field(2, DataComponentInterpretation::component_is_part_of_vector);
     DataOut<2>                              data_out;
     std::vector<PETScWrappers::MPI::Vector> ghosted;
     data_out.attach_dof_handler(op.get_dof_handler());
@@ -180,15 +184,16 @@ namespace DiskImpact
       data_out.add_data_vector(
         ghosted[i],
         std::vector<std::string>(2,
-                                 "mode_" + Utilities::int_to_string(
-                                             modes[i].index, 3)),
+                                 "mode_" +
+                                   Utilities::int_to_string(modes[i].index, 3)),
         DataOut<2>::type_dof_data,
         vector_field);
     data_out.build_patches(op.get_mapping(),
                            op.degree(),
                            DataOut<2>::curved_inner_cells);
     DataOutBase::VtkFlags flags;
-    flags.compression_level = DataOutBase::VtkFlags::ZlibCompressionLevel::best_speed;
+    flags.compression_level =
+      DataOutBase::VtkFlags::ZlibCompressionLevel::best_speed;
     data_out.set_flags(flags);
     const std::string name = data_out.write_vtu_with_pvtu_record(
       directory + "/", "modes", 0, communicator, 1);

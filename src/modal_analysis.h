@@ -33,6 +33,11 @@ namespace DiskImpact
     relative_error() const;
   };
 
+  /// The analytic free-disk modes of the disk @p geometry and @p material
+  /// describe.
+  Reference::FreeDiskModes
+  analytic_disk_modes(const DiskGeometry &geometry, const Material &material);
+
   /**
    * Modal analysis of the free disk on one mesh and degree: builds the mesh
    * and the elasticity operator, solves the eigenproblem, labels each mode
@@ -42,12 +47,12 @@ namespace DiskImpact
   class ModalAnalysis
   {
   public:
-    ModalAnalysis(const DiskGeometry       &geometry,
-                  const Material           &material,
-                  unsigned int              fe_degree,
-                  const ModalSolver        &solver,
-                  MPI_Comm                  communicator,
-                  dealii::TimerOutput      &timer);
+    ModalAnalysis(const DiskGeometry  &geometry,
+                  const Material      &material,
+                  unsigned int         fe_degree,
+                  const ModalSolver   &solver,
+                  MPI_Comm             communicator,
+                  dealii::TimerOutput &timer);
 
     /// Compute the rigid-body modes and the lowest @p n_elastic elastic
     /// ones (one more if that completes a pair of a degenerate frequency).
@@ -76,13 +81,13 @@ namespace DiskImpact
                 dealii::ConditionalOStream    &out);
 
   private:
-    const DiskGeometry                        &geometry;
-    const Material                            &material;
-    const ModalSolver                         &solver;
-    MPI_Comm                                   communicator;
-    dealii::TimerOutput                       &timer;
+    const DiskGeometry                             &geometry;
+    const Material                                 &material;
+    const ModalSolver                              &solver;
+    MPI_Comm                                        communicator;
+    dealii::TimerOutput                            &timer;
     dealii::parallel::distributed::Triangulation<2> triangulation;
-    ElasticityOperator                         op;
-    ModalBasis                                 basis;
+    ElasticityOperator                              op;
+    ModalBasis                                      basis;
   };
 } // namespace DiskImpact

@@ -98,8 +98,7 @@ namespace DiskImpact
     check(EPSSetTolerances(eps, relative_tolerance, 1000), "EPSSetTolerances");
     check(EPSSetConvergenceTest(eps, EPS_CONV_REL), "EPSSetConvergenceTest");
     check(EPSSetTarget(eps, shift), "EPSSetTarget");
-    check(EPSSetWhichEigenpairs(eps, EPS_TARGET_REAL),
-          "EPSSetWhichEigenpairs");
+    check(EPSSetWhichEigenpairs(eps, EPS_TARGET_REAL), "EPSSetWhichEigenpairs");
 
     // Shift-and-invert: (K - shift M)^{-1} M, the shifted matrix factorized
     // once by MUMPS (M's sparsity pattern is a subset of K's).
@@ -131,9 +130,9 @@ namespace DiskImpact
       {
         vectors.push_back(op.create_vector());
         PetscScalar real, imaginary;
-        check(EPSGetEigenpair(
-                eps, i, &real, &imaginary, vectors.back(), nullptr),
-              "EPSGetEigenpair");
+        check(
+          EPSGetEigenpair(eps, i, &real, &imaginary, vectors.back(), nullptr),
+          "EPSGetEigenpair");
         values[i] = PetscRealPart(real);
       }
     check(EPSDestroy(&eps), "EPSDestroy");

@@ -49,9 +49,9 @@ namespace DiskImpact
     // <sin,sin> over the edge, with d(phi) = ds / R.
     std::vector<double> sums(6 * n_orders, 0.);
 
-    const unsigned int  degree = op.get_dof_handler().get_fe().degree;
-    const QGauss<1>     quadrature(degree + 3);
-    FEFaceValues<2>     face_values(op.get_mapping(),
+    const unsigned int          degree = op.get_dof_handler().get_fe().degree;
+    const QGauss<1>             quadrature(degree + 3);
+    FEFaceValues<2>             face_values(op.get_mapping(),
                                 op.get_dof_handler().get_fe(),
                                 quadrature,
                                 update_values | update_quadrature_points |
@@ -67,19 +67,21 @@ namespace DiskImpact
             {
               face_values.reinit(cell, f);
               face_values.get_function_values(displacement, u);
-              for (const unsigned int q : face_values.quadrature_point_indices())
+              for (const unsigned int q :
+                   face_values.quadrature_point_indices())
                 {
-                  const Tensor<1, 2> x = face_values.quadrature_point(q) - center;
-                  const double       phi    = std::atan2(x[1], x[0]);
-                  const double       c      = std::cos(phi);
-                  const double       s      = std::sin(phi);
-                  const double       u_r    = u[q][0] * c + u[q][1] * s;
-                  const double       u_phi  = -u[q][0] * s + u[q][1] * c;
-                  const double       dphi   = face_values.JxW(q) / x.norm();
+                  const Tensor<1, 2> x =
+                    face_values.quadrature_point(q) - center;
+                  const double phi   = std::atan2(x[1], x[0]);
+                  const double c     = std::cos(phi);
+                  const double s     = std::sin(phi);
+                  const double u_r   = u[q][0] * c + u[q][1] * s;
+                  const double u_phi = -u[q][0] * s + u[q][1] * c;
+                  const double dphi  = face_values.JxW(q) / x.norm();
                   for (unsigned int n = 0; n < n_orders; ++n)
                     {
-                      const double cn = std::cos(n * phi) * dphi;
-                      const double sn = std::sin(n * phi) * dphi;
+                      const double cn  = std::cos(n * phi) * dphi;
+                      const double sn  = std::sin(n * phi) * dphi;
                       double      *out = &sums[6 * n];
                       out[0] += u_r * cn;
                       out[1] += u_r * sn;
@@ -98,13 +100,13 @@ namespace DiskImpact
     HarmonicContent content;
     for (unsigned int n = 0; n < n_orders; ++n)
       {
-        const double *in  = &sums[6 * n];
+        const double *in        = &sums[6 * n];
         auto          cos_power = [&](const double a) { return a * a / in[4]; };
         auto          sin_power = [&](const double b) {
           return n > 0 ? b * b / in[5] : 0.;
         };
-        content.radial_power.push_back(
-          cos_power(in[0]) + (full_circle ? sin_power(in[1]) : 0.));
+        content.radial_power.push_back(cos_power(in[0]) +
+                                       (full_circle ? sin_power(in[1]) : 0.));
         content.tangential_power.push_back(
           sin_power(in[3]) + (full_circle ? cos_power(in[2]) : 0.));
       }
@@ -121,14 +123,14 @@ namespace DiskImpact
     const unsigned int orientations = half_disk ? 1 : 2;
 
     std::map<std::pair<unsigned int, ModeFamily>, unsigned int> seen;
-    std::vector<LabelledMode>                                    labelled;
+    std::vector<LabelledMode>                                   labelled;
     for (unsigned int i = 0; i < eigenvalues.size(); ++i)
       {
-        LabelledMode mode;
-        const auto  &h               = harmonics[i];
-        const unsigned int n         = h.dominant_order();
-        mode.harmonic_fraction       = h.dominant_fraction();
-        mode.label.n                 = n;
+        LabelledMode       mode;
+        const auto        &h   = harmonics[i];
+        const unsigned int n   = h.dominant_order();
+        mode.harmonic_fraction = h.dominant_fraction();
+        mode.label.n           = n;
         if (eigenvalues[i] < rigid_eigenvalue)
           mode.label.family = ModeFamily::rigid;
         else if (n == 0)

@@ -24,12 +24,12 @@ namespace DiskImpact
     void
     parse_parameters(dealii::ParameterHandler &prm);
 
-    RunParameters                  run;
-    DiskGeometry                   geometry;
-    Material                       material;
-    FiniteElementParameters        finite_element;
-    ModalSolver                    modal_solver;
-    ModalConvergenceStudy          modal_convergence;
+    RunParameters           run;
+    DiskGeometry            geometry;
+    Material                material;
+    FiniteElementParameters finite_element;
+    ModalSolver             modal_solver;
+    ModalConvergenceStudy   modal_convergence;
   };
 
   /**

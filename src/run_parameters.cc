@@ -28,10 +28,9 @@ namespace DiskImpact
   RunParameters::parse_parameters(ParameterHandler &prm)
   {
     const std::string name = prm.get("Task");
-    task = (name == "modal analysis") ? Task::modal_analysis :
-                                        Task::modal_convergence;
-    output_directory = prm.get("Output directory");
-    require(!output_directory.empty(),
-            "'Output directory' must not be empty");
+    task                   = (name == "modal analysis") ? Task::modal_analysis :
+                                                          Task::modal_convergence;
+    output_directory       = prm.get("Output directory");
+    require(!output_directory.empty(), "'Output directory' must not be empty");
   }
 } // namespace DiskImpact

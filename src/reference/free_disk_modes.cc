@@ -73,9 +73,9 @@ namespace DiskImpact
     FreeDiskModes::FreeDiskModes(const double in_plane_poisson_ratio,
                                  const double longitudinal_wave_speed,
                                  const double radius)
-      : nu2(in_plane_poisson_ratio)
-      , c_L(longitudinal_wave_speed)
-      , R(radius)
+        : nu2(in_plane_poisson_ratio)
+        , c_L(longitudinal_wave_speed)
+        , R(radius)
     {
       if (!(nu2 > -1. && nu2 < 1.) || !(c_L > 0.) || !(R > 0.))
         throw std::invalid_argument(
@@ -116,8 +116,8 @@ namespace DiskImpact
       double       s_rr[2], s_rphi[2];
       for (unsigned int c = 0; c < 2; ++c)
         {
-          s_rr[c]   = (lambda_over_mu + 2.) * df[c] +
-                    lambda_over_mu * (f[c] + n * g[c]);
+          s_rr[c] =
+            (lambda_over_mu + 2.) * df[c] + lambda_over_mu * (f[c] + n * g[c]);
           s_rphi[c] = dg[c] - g[c] - n * f[c];
         }
       return s_rr[0] * s_rphi[1] - s_rr[1] * s_rphi[0];
@@ -190,8 +190,8 @@ namespace DiskImpact
           // Scan for sign changes with a step well below the spacing of
           // the zeros of J_n(kappa'), then bracket each root to machine
           // precision.
-          const double step  = 0.01 / wave_speed_ratio();
-          auto         f     = [&](const double k) {
+          const double step = 0.01 / wave_speed_ratio();
+          auto         f    = [&](const double k) {
             return frequency_equation(n, family, k);
           };
           std::vector<double> roots;
@@ -204,15 +204,14 @@ namespace DiskImpact
               else if (f0 * f1 < 0.)
                 {
                   boost::uintmax_t max_iterations = 200;
-                  const auto       bracket =
-                    boost::math::tools::toms748_solve(
-                      f,
-                      k0,
-                      k1,
-                      f0,
-                      f1,
-                      boost::math::tools::eps_tolerance<double>(52),
-                      max_iterations);
+                  const auto       bracket = boost::math::tools::toms748_solve(
+                    f,
+                    k0,
+                    k1,
+                    f0,
+                    f1,
+                    boost::math::tools::eps_tolerance<double>(52),
+                    max_iterations);
                   roots.push_back(0.5 * (bracket.first + bracket.second));
                 }
               k0 = k1;

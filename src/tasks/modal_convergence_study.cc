@@ -25,8 +25,8 @@ namespace DiskImpact
     parse_unsigned_list(const std::string &text)
     {
       std::vector<unsigned int> values;
-      for (const int v : Utilities::string_to_int(
-             Utilities::split_string_list(text, ',')))
+      for (const int v :
+           Utilities::string_to_int(Utilities::split_string_list(text, ',')))
         values.push_back(v);
       return values;
     }
@@ -78,19 +78,20 @@ namespace DiskImpact
     ConditionalOStream pcout(std::cout,
                              Utilities::MPI::this_mpi_process(communicator) ==
                                0);
-    TimerOutput timer(communicator, pcout, TimerOutput::never,
+    TimerOutput        timer(communicator,
+                      pcout,
+                      TimerOutput::never,
                       TimerOutput::wall_times);
 
     // The distinct analytic modes to follow, and how many computed modes
     // (with multiplicity) it takes to reach the last of them.
     const bool half = parameters.geometry.is_half_disk();
-    const Reference::FreeDiskModes reference(
-      parameters.material.in_plane_poisson_ratio(),
-      parameters.material.longitudinal_wave_speed(),
-      parameters.geometry.radius());
+    const auto reference =
+      analytic_disk_modes(parameters.geometry, parameters.material);
     std::vector<Reference::ModeLabel> targets;
     unsigned int                      n_elastic_needed = 0;
-    for (unsigned int count = n_modes_compared; targets.size() < n_modes_compared;
+    for (unsigned int count = n_modes_compared;
+         targets.size() < n_modes_compared;
          count *= 2)
       {
         targets.clear();
@@ -105,18 +106,18 @@ namespace DiskImpact
             }
       }
 
-    CsvTable table({"degree",
-                    "refinements",
-                    "n_dofs",
-                    "h",
-                    "mode",
-                    "n",
-                    "l",
-                    "family",
-                    "omega",
-                    "omega_exact",
-                    "relative_error",
-                    "observed_order"});
+    CsvTable           table({"degree",
+                              "refinements",
+                              "n_dofs",
+                              "h",
+                              "mode",
+                              "n",
+                              "l",
+                              "family",
+                              "omega",
+                              "omega_exact",
+                              "relative_error",
+                              "observed_order"});
     std::ostringstream summary;
     for (const unsigned int degree : degrees)
       {
@@ -132,8 +133,8 @@ namespace DiskImpact
                                    parameters.modal_solver,
                                    communicator,
                                    timer);
-            const auto   modes = analysis.run(n_elastic_needed);
-            const double h     = analysis.mesh_size();
+            const auto    modes = analysis.run(n_elastic_needed);
+            const double  h     = analysis.mesh_size();
             pcout << "Q" << degree << ", " << level << " refinements, "
                   << analysis.n_dofs() << " DoFs, h = " << h << std::endl;
 
@@ -176,9 +177,8 @@ namespace DiskImpact
                     summary << "  Q" << degree << " level " << std::setw(2)
                             << level << "  mode " << std::setw(2) << t << " ("
                             << targets[t].n << "," << targets[t].l << ","
-                            << to_string(targets[t].family)
-                            << ")  error " << std::scientific
-                            << std::setprecision(3) << *error
+                            << to_string(targets[t].family) << ")  error "
+                            << std::scientific << std::setprecision(3) << *error
                             << "  order " << std::fixed << std::setprecision(2)
                             << order << '\n';
                   }

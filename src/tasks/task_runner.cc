@@ -1,11 +1,9 @@
 #include "tasks/task_runner.h"
 
-#include "csv_table.h"
-#include "modal_analysis.h"
 #include "parameters.h"
+#include "tasks/modal_analysis_task.h"
 
 #include <deal.II/base/conditional_ostream.h>
-#include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
 
 #include <filesystem>
@@ -37,78 +35,6 @@ namespace DiskImpact
       MPI_Barrier(communicator);
     }
 
-    /// Task 'modal analysis': modes.csv, mode shapes and the table.
-    void
-    run_modal_analysis(const Parameters &parameters, MPI_Comm communicator)
-    {
-      ConditionalOStream pcout(
-        std::cout, Utilities::MPI::this_mpi_process(communicator) == 0);
-      TimerOutput   timer(communicator,
-                        pcout,
-                        TimerOutput::summary,
-                        TimerOutput::wall_times);
-      ModalAnalysis analysis(parameters.geometry,
-                             parameters.material,
-                             parameters.finite_element.degree,
-                             parameters.modal_solver,
-                             communicator,
-                             timer);
-      pcout << "Mesh: " << analysis.n_cells() << " cells, "
-            << analysis.n_dofs() << " DoFs (Q" << parameters.finite_element.degree
-            << ", boundary mapping of degree "
-            << parameters.finite_element.degree << ")" << std::endl;
-
-      const auto modes =
-        analysis.run(parameters.modal_solver.n_elastic_modes());
-      {
-        TimerOutput::Scope scope(timer, "output");
-        const std::string &directory = parameters.run.output_directory;
-        analysis.write_mode_shapes(modes, directory);
-        if (Utilities::MPI::this_mpi_process(communicator) == 0)
-          ModalAnalysis::write_modes_csv(modes, directory + "/modes.csv");
-      }
-
-      unsigned int n_rigid   = 0;
-      double       max_error = 0.;
-      for (const auto &mode : modes)
-        if (mode.is_rigid())
-          ++n_rigid;
-        else
-          max_error = std::max(max_error, std::abs(mode.relative_error()));
-      ModalAnalysis::print_table(modes, pcout);
-
-      // The analytic modes in their own order, beside the computed labels.
-      const Reference::FreeDiskModes reference(
-        parameters.material.in_plane_poisson_ratio(),
-        parameters.material.longitudinal_wave_speed(),
-        parameters.geometry.radius());
-      const auto analytic =
-        reference.lowest_modes(modes.size() - n_rigid,
-                               parameters.geometry.is_half_disk());
-      unsigned int n_matching = 0;
-      while (n_matching < analytic.size() &&
-             modes[n_rigid + n_matching].label == analytic[n_matching])
-        ++n_matching;
-      if (Utilities::MPI::this_mpi_process(communicator) == 0)
-        {
-          CsvTable table({"index", "omega", "n", "l", "family"});
-          for (unsigned int i = 0; i < analytic.size(); ++i)
-            {
-              table.start_row();
-              table.add(i);
-              table.add(reference.omega(analytic[i]));
-              table.add(analytic[i].n);
-              table.add(analytic[i].l);
-              table.add(to_string(analytic[i].family));
-            }
-          table.write(parameters.run.output_directory +
-                      "/analytic_modes.csv");
-        }
-      pcout << n_rigid << " rigid-body modes, " << modes.size() - n_rigid
-            << " elastic modes, largest relative error " << max_error
-            << "\nLabels equal to the analytic ordering: first " << n_matching
-            << " of " << analytic.size() << " elastic modes" << std::endl;
-    }
   } // namespace
 
   void

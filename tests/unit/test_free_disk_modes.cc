@@ -5,7 +5,6 @@
 
 #include <boost/math/special_functions/bessel.hpp>
 #include <boost/math/special_functions/bessel_prime.hpp>
-
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -35,9 +34,9 @@ TEST_CASE("torsional roots are the zeros of J_2(kappa')", "[reference]")
           const double kappa_prime =
             modes.kappa({0, l, ModeFamily::torsional}) *
             modes.wave_speed_ratio();
-          CHECK(kappa_prime ==
-                Approx(boost::math::cyl_bessel_j_zero(2.0, l + 1))
-                  .epsilon(1e-13));
+          CHECK(
+            kappa_prime ==
+            Approx(boost::math::cyl_bessel_j_zero(2.0, l + 1)).epsilon(1e-13));
         }
     }
 }
@@ -83,7 +82,7 @@ TEST_CASE("printed eq. 25 has the roots of the boundary determinant",
           std::vector<double> roots;
           if (n == 0)
             {
-              roots = modes.kappa_roots(0, ModeFamily::radial, 12.);
+              roots        = modes.kappa_roots(0, ModeFamily::radial, 12.);
               const auto t = modes.kappa_roots(0, ModeFamily::torsional, 12.);
               roots.insert(roots.end(), t.begin(), t.end());
             }
@@ -121,7 +120,8 @@ TEST_CASE("root finder misses no root", "[reference]")
       CAPTURE(n);
       CHECK(roots.size() == count);
       for (const double k : roots)
-        CHECK(std::abs(modes.boundary_determinant(n, k)) < 1e-10 * (1 + k * k * k * k));
+        CHECK(std::abs(modes.boundary_determinant(n, k)) <
+              1e-10 * (1 + k * k * k * k));
     }
 }
 

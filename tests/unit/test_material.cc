@@ -53,10 +53,10 @@ TEST_CASE("plane stress stiffness inverts the plane-stress compliance",
   const double E = 3., nu = 0.33;
   Material     m;
   m.set(PlaneModel::plane_stress, E, nu, 1.);
-  const auto c = m.stiffness_tensor();
+  const auto            c = m.stiffness_tensor();
   SymmetricTensor<2, 2> eps;
-  eps[0][0] = 1. / E;
-  eps[1][1] = -nu / E;
+  eps[0][0]        = 1. / E;
+  eps[1][1]        = -nu / E;
   const auto sigma = c * eps; // uniaxial stress sigma_xx = 1
   CHECK(sigma[0][0] == Approx(1.).epsilon(1e-14));
   CHECK(std::abs(sigma[1][1]) < 1e-14);
@@ -75,7 +75,10 @@ TEST_CASE("plane strain (E, nu) equals plane stress (E/(1-nu^2), nu/(1-nu))",
       CAPTURE(nu);
       Material strain, stress;
       strain.set(PlaneModel::plane_strain, 1.7, nu, 2.);
-      stress.set(PlaneModel::plane_stress, 1.7 / (1 - nu * nu), nu / (1 - nu), 2.);
+      stress.set(PlaneModel::plane_stress,
+                 1.7 / (1 - nu * nu),
+                 nu / (1 - nu),
+                 2.);
       CHECK(tensor_difference(strain.stiffness_tensor(),
                               stress.stiffness_tensor()) < 1e-14);
       CHECK(strain.in_plane_young_modulus() ==
@@ -86,8 +89,7 @@ TEST_CASE("plane strain (E, nu) equals plane stress (E/(1-nu^2), nu/(1-nu))",
     }
 }
 
-TEST_CASE("the seed's nu2 = 0.9 is plane strain with nu = 0.4737",
-          "[material]")
+TEST_CASE("the seed's nu2 = 0.9 is plane strain with nu = 0.4737", "[material]")
 {
   Material m;
   m.set(PlaneModel::plane_strain, 1., 0.9 / 1.9, 1.);

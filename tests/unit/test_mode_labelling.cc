@@ -38,12 +38,14 @@ namespace
   {
   public:
     RadialHarmonic(const unsigned int n, const dealii::Point<2> &c)
-      : dealii::Function<2>(2)
-      , n(n)
-      , c(c)
-    {}
+        : dealii::Function<2>(2)
+        , n(n)
+        , c(c)
+    {
+    }
     double
-    value(const dealii::Point<2> &p, const unsigned int component) const override
+    value(const dealii::Point<2> &p,
+          const unsigned int      component) const override
     {
       const auto   x   = p - c;
       const double phi = std::atan2(x[1], x[0]);
