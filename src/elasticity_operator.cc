@@ -2,6 +2,7 @@
 
 #include "geometry.h"
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 
 #include <deal.II/dofs/dof_renumbering.h>
@@ -53,7 +54,8 @@ namespace DiskImpact
   void
   ElasticityOperator::setup(
     const parallel::distributed::Triangulation<2> &triangulation,
-    const DiskGeometry                            &geometry)
+    const DiskGeometry                            &geometry,
+    const bool                                     with_tangent)
   {
     fe      = std::make_unique<FESystem<2>>(FE_Q<2>(fe_degree), 2);
     mapping = std::make_unique<MappingQ<2>>(fe_degree);
@@ -100,6 +102,8 @@ namespace DiskImpact
     };
     make_matrix(all_components, stiffness);
     make_matrix(same_component, mass);
+    if (with_tangent)
+      make_matrix(all_components, tangent);
   }
 
   void
@@ -165,6 +169,104 @@ namespace DiskImpact
       if (constraints.is_constrained(i))
         mass.set(i, i, stiffness.diag_element(i) / eigenvalue);
     mass.compress(VectorOperation::insert);
+  }
+
+  void
+  ElasticityOperator::assemble_body_force(const Tensor<1, 2> &force_per_area,
+                                          PETScWrappers::MPI::Vector &f) const
+  {
+    const QGauss<2>                      quadrature(fe_degree + 1);
+    FEValues<2>                          fe_values(*mapping,
+                          *fe,
+                          quadrature,
+                          update_values | update_JxW_values);
+    const unsigned int                   dofs_per_cell = fe->n_dofs_per_cell();
+    Vector<double>                       cell_f(dofs_per_cell);
+    std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
+    const FEValuesExtractors::Vector     displacement(0);
+    f = 0.;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          cell_f = 0.;
+          for (const unsigned int q : fe_values.quadrature_point_indices())
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              cell_f(i) += force_per_area *
+                           fe_values[displacement].value(i, q) *
+                           fe_values.JxW(q);
+          cell->get_dof_indices(dof_indices);
+          constraints.distribute_local_to_global(cell_f, dof_indices, f);
+        }
+    f.compress(VectorOperation::add);
+  }
+
+  Tensor<1, 2>
+  ElasticityOperator::mean_displacement(
+    const PETScWrappers::MPI::Vector &ghosted_u) const
+  {
+    const QGauss<2>           quadrature(fe_degree + 1);
+    FEValues<2>               fe_values(*mapping,
+                          *fe,
+                          quadrature,
+                          update_values | update_JxW_values);
+    std::vector<Tensor<1, 2>> u(quadrature.size());
+    Tensor<1, 2>              integral;
+    double                    area = 0.;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          fe_values[FEValuesExtractors::Vector(0)].get_function_values(
+            ghosted_u, u);
+          for (const unsigned int q : fe_values.quadrature_point_indices())
+            {
+              integral += u[q] * fe_values.JxW(q);
+              area += fe_values.JxW(q);
+            }
+        }
+    const MPI_Comm comm = dof_handler.get_communicator();
+    return Utilities::MPI::sum(integral, comm) /
+           Utilities::MPI::sum(area, comm);
+  }
+
+  Tensor<1, 2>
+  ElasticityOperator::vertex_displacement(
+    const PETScWrappers::MPI::Vector &ghosted_u,
+    const Point<2>                   &vertex) const
+  {
+    // Each rank that owns a cell at the vertex contributes once.
+    const double tolerance = 1e-10 * (1. + vertex.norm());
+    Tensor<1, 2> u;
+    double       found = 0.;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && found == 0.)
+        for (const unsigned int v : cell->vertex_indices())
+          if (cell->vertex(v).distance(vertex) < tolerance)
+            {
+              for (unsigned int c = 0; c < 2; ++c)
+                u[c] = ghosted_u(cell->vertex_dof_index(v, c));
+              found = 1.;
+              break;
+            }
+    const MPI_Comm comm    = dof_handler.get_communicator();
+    const double   n_found = Utilities::MPI::sum(found, comm);
+    AssertThrow(n_found > 0.,
+                ExcMessage("vertex_displacement: no mesh vertex at the point"));
+    return Utilities::MPI::sum(u, comm) / n_found;
+  }
+
+  PETScWrappers::MPI::SparseMatrix &
+  ElasticityOperator::tangent_reset_to_stiffness()
+  {
+    tangent.copy_from(stiffness);
+    return tangent;
+  }
+
+  const PETScWrappers::MPI::SparseMatrix &
+  ElasticityOperator::tangent_matrix() const
+  {
+    return tangent;
   }
 
   const DoFHandler<2> &

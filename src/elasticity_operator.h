@@ -47,10 +47,12 @@ namespace DiskImpact
     unsigned int
     degree() const;
 
-    /// Distribute DoFs on @p triangulation, build constraints and matrices.
+    /// Distribute DoFs on @p triangulation, build constraints and matrices
+    /// (with @p with_tangent also a matrix of K's pattern for Newton).
     void
     setup(const dealii::parallel::distributed::Triangulation<2> &triangulation,
-          const DiskGeometry                                    &geometry);
+          const DiskGeometry                                    &geometry,
+          bool with_tangent = false);
 
     /// Assemble M (rho u.v) and K (eps(u) : C : eps(v)).
     void
@@ -63,6 +65,29 @@ namespace DiskImpact
      */
     void
     move_constrained_eigenvalues(double eigenvalue);
+
+    /// f_i = int b . v_i for a uniform body force @p force_per_area.
+    void
+    assemble_body_force(const dealii::Tensor<1, 2>         &force_per_area,
+                        dealii::PETScWrappers::MPI::Vector &f) const;
+
+    /// Area average of the displacement: the centre of mass's displacement
+    /// for a uniform density.
+    dealii::Tensor<1, 2>
+    mean_displacement(
+      const dealii::PETScWrappers::MPI::Vector &ghosted_u) const;
+
+    /// The displacement at a vertex of the mesh.
+    dealii::Tensor<1, 2>
+    vertex_displacement(const dealii::PETScWrappers::MPI::Vector &ghosted_u,
+                        const dealii::Point<2>                   &vertex) const;
+
+    /// The Newton tangent, reset to K (setup() with with_tangent).
+    dealii::PETScWrappers::MPI::SparseMatrix &
+    tangent_reset_to_stiffness();
+    /// The Newton tangent as last assembled.
+    const dealii::PETScWrappers::MPI::SparseMatrix &
+    tangent_matrix() const;
 
     const dealii::DoFHandler<2> &
     get_dof_handler() const;
@@ -98,5 +123,6 @@ namespace DiskImpact
 
     dealii::PETScWrappers::MPI::SparseMatrix mass;
     dealii::PETScWrappers::MPI::SparseMatrix stiffness;
+    dealii::PETScWrappers::MPI::SparseMatrix tangent;
   };
 } // namespace DiskImpact

@@ -19,6 +19,8 @@ namespace DiskImpact
     FiniteElementParameters::declare_parameters(prm);
     ModalSolver::declare_parameters(prm);
     ModalConvergenceStudy::declare_parameters(prm);
+    ContactParameters::declare_parameters(prm);
+    QuasistaticContact::declare_parameters(prm);
   }
 
   void
@@ -30,6 +32,18 @@ namespace DiskImpact
     finite_element.parse_parameters(prm);
     modal_solver.parse_parameters(prm);
     modal_convergence.parse_parameters(prm);
+    contact.parse_parameters(prm);
+    quasistatic_contact.parse_parameters(prm);
+
+    // Checks across subsections.
+    if (run.task == Task::quasistatic_contact)
+      {
+        require(geometry.is_half_disk(),
+                "Task 'quasistatic contact' needs 'Domain = half disk' (the "
+                "symmetry condition holds the rigid motions the wall does "
+                "not)");
+        contact.check_wall(geometry, 0.);
+      }
   }
 
   void

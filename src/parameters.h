@@ -1,11 +1,13 @@
 #pragma once
 
+#include "contact.h"
 #include "elasticity_operator.h"
 #include "geometry.h"
 #include "material.h"
 #include "modal_solver.h"
 #include "run_parameters.h"
 #include "tasks/modal_convergence_study.h"
+#include "tasks/quasistatic_contact.h"
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -30,6 +32,8 @@ namespace DiskImpact
     FiniteElementParameters finite_element;
     ModalSolver             modal_solver;
     ModalConvergenceStudy   modal_convergence;
+    ContactParameters       contact;
+    QuasistaticContact      quasistatic_contact;
   };
 
   /**

@@ -2,6 +2,8 @@
 
 #include "input_error.h"
 
+#include <map>
+
 namespace DiskImpact
 {
   using namespace dealii;
@@ -11,12 +13,15 @@ namespace DiskImpact
   {
     prm.declare_entry("Task",
                       "modal analysis",
-                      Patterns::Selection("modal analysis|modal convergence"),
+                      Patterns::Selection(
+                        "modal analysis|modal convergence|quasistatic contact"),
                       "What to compute. 'modal analysis': the lowest modes of "
                       "the free disk compared with the analytic Bessel modes "
                       "(modes.csv). 'modal convergence': the same on a "
                       "sequence of meshes and degrees, with observed orders "
-                      "(modal_convergence.csv).");
+                      "(modal_convergence.csv). 'quasistatic contact': a half "
+                      "disk pressed on the wall by a body force, the contact "
+                      "law delta(P) (contact_law.csv).");
     prm.declare_entry("Output directory",
                       "output/modal",
                       Patterns::Anything(),
@@ -27,10 +32,12 @@ namespace DiskImpact
   void
   RunParameters::parse_parameters(ParameterHandler &prm)
   {
-    const std::string name = prm.get("Task");
-    task                   = (name == "modal analysis") ? Task::modal_analysis :
-                                                          Task::modal_convergence;
-    output_directory       = prm.get("Output directory");
+    const std::map<std::string, Task> tasks{
+      {"modal analysis", Task::modal_analysis},
+      {"modal convergence", Task::modal_convergence},
+      {"quasistatic contact", Task::quasistatic_contact}};
+    task             = tasks.at(prm.get("Task"));
+    output_directory = prm.get("Output directory");
     require(!output_directory.empty(), "'Output directory' must not be empty");
   }
 } // namespace DiskImpact

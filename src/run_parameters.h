@@ -10,7 +10,8 @@ namespace DiskImpact
   enum class Task
   {
     modal_analysis,
-    modal_convergence
+    modal_convergence,
+    quasistatic_contact
   };
 
   /**

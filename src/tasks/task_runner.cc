@@ -59,6 +59,9 @@ namespace DiskImpact
         case Task::modal_convergence:
           parameters.modal_convergence.run(parameters, communicator);
           break;
+        case Task::quasistatic_contact:
+          parameters.quasistatic_contact.run(parameters, communicator);
+          break;
       }
   }
 } // namespace DiskImpact

@@ -1,0 +1,175 @@
+#include "contact_operator.h"
+
+#include "elasticity_operator.h"
+#include "geometry.h"
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace DiskImpact
+{
+  using namespace dealii;
+
+  double
+  ContactState::half_width() const
+  {
+    return force > 0. ? 2. * std::sqrt(second_moment / force) : 0.;
+  }
+
+  ContactOperator::ContactOperator(const ElasticityOperator &op,
+                                   const RigidWall          &wall,
+                                   const PenaltyLaw         &law,
+                                   const Point<2>           &disk_center)
+      : op(op)
+      , wall(wall)
+      , law(law)
+      , origin(disk_center - wall.gap(disk_center) * wall.normal)
+      , tangent_direction({-wall.normal[1], wall.normal[0]})
+  {
+  }
+
+  ContactState
+  ContactOperator::assemble(const PETScWrappers::MPI::Vector &ghosted_u,
+                            PETScWrappers::MPI::Vector       *residual,
+                            PETScWrappers::MPI::SparseMatrix *tangent) const
+  {
+    const auto &dof_handler = op.get_dof_handler();
+    const auto &fe          = dof_handler.get_fe();
+    // More points than the element needs: the pressure has a kink where
+    // contact ends inside a face.
+    const QGauss<1>    quadrature(fe.degree + 3);
+    FEFaceValues<2>    face_values(op.get_mapping(),
+                                fe,
+                                quadrature,
+                                update_values | update_quadrature_points |
+                                  update_JxW_values);
+    const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
+    Vector<double>     cell_residual(dofs_per_cell);
+    FullMatrix<double> cell_tangent(dofs_per_cell, dofs_per_cell);
+    std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
+    std::vector<Tensor<1, 2>>            u(quadrature.size());
+    std::vector<double>                  phi_n(dofs_per_cell);
+    const FEValuesExtractors::Vector     displacement(0);
+
+    ContactState state;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              cell->face(f)->boundary_id() == BoundaryIds::curved)
+            {
+              face_values.reinit(cell, f);
+              face_values[displacement].get_function_values(ghosted_u, u);
+              bool in_contact = false;
+              cell_residual   = 0.;
+              cell_tangent    = 0.;
+              for (const unsigned int q :
+                   face_values.quadrature_point_indices())
+                {
+                  const Point<2> x   = face_values.quadrature_point(q) + u[q];
+                  const double   gap = wall.gap(x);
+                  if (gap >= 0.)
+                    continue;
+                  in_contact      = true;
+                  const double p  = law.pressure(gap);
+                  const double ds = face_values.JxW(q);
+                  // Hertz's coordinate: along the undeformed edge (the
+                  // deformed edge is shorter by a strain of order a / R).
+                  const double t = (face_values.quadrature_point(q) - origin) *
+                                   tangent_direction;
+                  state.force += p * ds;
+                  state.energy += law.energy(gap) * ds;
+                  state.second_moment += p * t * t * ds;
+                  state.max_penetration = std::max(state.max_penetration, -gap);
+                  for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                    phi_n[i] =
+                      face_values[displacement].value(i, q) * wall.normal;
+                  for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                    {
+                      cell_residual(i) -= p * phi_n[i] * ds;
+                      for (unsigned int j = 0; j < dofs_per_cell; ++j)
+                        cell_tangent(i, j) -= law.pressure_derivative(gap) *
+                                              phi_n[i] * phi_n[j] * ds;
+                    }
+                }
+              if (!in_contact)
+                continue;
+              cell->get_dof_indices(dof_indices);
+              if (residual != nullptr)
+                op.get_constraints().distribute_local_to_global(cell_residual,
+                                                                dof_indices,
+                                                                *residual);
+              if (tangent != nullptr)
+                op.get_constraints().distribute_local_to_global(cell_tangent,
+                                                                dof_indices,
+                                                                *tangent);
+            }
+
+    const MPI_Comm comm   = dof_handler.get_communicator();
+    state.force           = Utilities::MPI::sum(state.force, comm);
+    state.energy          = Utilities::MPI::sum(state.energy, comm);
+    state.second_moment   = Utilities::MPI::sum(state.second_moment, comm);
+    state.max_penetration = Utilities::MPI::max(state.max_penetration, comm);
+    return state;
+  }
+
+  std::vector<std::pair<double, double>>
+  ContactOperator::pressure_profile(
+    const PETScWrappers::MPI::Vector &ghosted_u) const
+  {
+    const auto               &dof_handler = op.get_dof_handler();
+    const QGauss<1>           quadrature(dof_handler.get_fe().degree + 3);
+    FEFaceValues<2>           face_values(op.get_mapping(),
+                                dof_handler.get_fe(),
+                                quadrature,
+                                update_values | update_quadrature_points);
+    std::vector<Tensor<1, 2>> u(quadrature.size());
+    std::vector<std::pair<double, double>> samples;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              cell->face(f)->boundary_id() == BoundaryIds::curved)
+            {
+              face_values.reinit(cell, f);
+              face_values[FEValuesExtractors::Vector(0)].get_function_values(
+                ghosted_u, u);
+              for (const unsigned int q :
+                   face_values.quadrature_point_indices())
+                {
+                  const Point<2> x = face_values.quadrature_point(q) + u[q];
+                  const double   p = law.pressure(wall.gap(x));
+                  if (p > 0.)
+                    samples.emplace_back((face_values.quadrature_point(q) -
+                                          origin) *
+                                           tangent_direction,
+                                         p);
+                }
+            }
+    std::vector<std::pair<double, double>> all;
+    for (const auto &part :
+         Utilities::MPI::all_gather(dof_handler.get_communicator(), samples))
+      all.insert(all.end(), part.begin(), part.end());
+    std::sort(all.begin(), all.end());
+    return all;
+  }
+
+  double
+  ContactOperator::smallest_edge_face(const ElasticityOperator &op)
+  {
+    double smallest = std::numeric_limits<double>::max();
+    for (const auto &cell : op.get_dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              cell->face(f)->boundary_id() == BoundaryIds::curved)
+            smallest = std::min(smallest, cell->face(f)->measure());
+    return Utilities::MPI::min(smallest,
+                               op.get_dof_handler().get_communicator());
+  }
+} // namespace DiskImpact

@@ -1,0 +1,75 @@
+#pragma once
+
+#include "contact.h"
+
+#include <deal.II/lac/petsc_sparse_matrix.h>
+#include <deal.II/lac/petsc_vector.h>
+
+#include <utility>
+#include <vector>
+
+namespace DiskImpact
+{
+  class ElasticityOperator;
+
+  /// Integrals of the wall's pressure over the disk's edge.
+  struct ContactState
+  {
+    /// int p ds: the wall's force on the disk along its normal.
+    double force = 0.;
+    /// int k <-g>^2 / 2 ds.
+    double energy = 0.;
+    /// max(-g): the deepest penetration.
+    double max_penetration = 0.;
+    /// int p t^2 ds, t the coordinate of the undeformed edge point along the
+    /// wall, from the point of the wall nearest the disk's centre.
+    double second_moment = 0.;
+
+    /// Half-width of a Hertz profile p0 sqrt(1 - t^2/a^2) with the same
+    /// zeroth and second moments: a = 2 sqrt(second_moment / force).
+    double
+    half_width() const;
+  };
+
+  /**
+   * The penalty contact of the disk's curved edge with a rigid wall, on the
+   * quadrature points of the edge faces: the residual contribution
+   * -int p (n . v) ds and its consistent tangent int k H(-g) (n . u)(n . v) ds
+   * (H the Heaviside function), for small strains (reference edge, current
+   * gap).
+   */
+  class ContactOperator
+  {
+  public:
+    ContactOperator(const ElasticityOperator &op,
+                    const RigidWall          &wall,
+                    const PenaltyLaw         &law,
+                    const dealii::Point<2>   &disk_center);
+
+    /**
+     * Add the contact terms at the displacement @p ghosted_u to @p residual
+     * (if not null) and @p tangent (if not null; the caller compresses both)
+     * and return the integrals, summed over all ranks.
+     */
+    ContactState
+    assemble(const dealii::PETScWrappers::MPI::Vector &ghosted_u,
+             dealii::PETScWrappers::MPI::Vector       *residual,
+             dealii::PETScWrappers::MPI::SparseMatrix *tangent) const;
+
+    /// (t, p) at the quadrature points with p > 0, on all ranks, sorted by t.
+    std::vector<std::pair<double, double>>
+    pressure_profile(const dealii::PETScWrappers::MPI::Vector &ghosted_u) const;
+
+    /// The length of the smallest face on the curved edge (over all ranks).
+    static double
+    smallest_edge_face(const ElasticityOperator &op);
+
+  private:
+    const ElasticityOperator &op;
+    RigidWall                 wall;
+    PenaltyLaw                law;
+    /// Where t = 0: the point of the wall nearest the disk's centre.
+    dealii::Point<2>     origin;
+    dealii::Tensor<1, 2> tangent_direction;
+  };
+} // namespace DiskImpact

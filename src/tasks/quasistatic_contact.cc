@@ -1,0 +1,479 @@
+#include "tasks/quasistatic_contact.h"
+
+#include "contact_operator.h"
+#include "csv_table.h"
+#include "elasticity_operator.h"
+#include "input_error.h"
+#include "parameters.h"
+#include "reference/log_contact_law.h"
+#include "stress_postprocessor.h"
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/function.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/base/utilities.h>
+
+#include <deal.II/distributed/tria.h>
+
+#include <deal.II/grid/grid_tools.h>
+
+#include <deal.II/lac/petsc_solver.h>
+
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace DiskImpact
+{
+  using namespace dealii;
+
+  double
+  ContactLawPoint::constant_com() const
+  {
+    return Reference::LogContactLaw::constant_from(load, delta_com);
+  }
+
+  double
+  ContactLawPoint::constant_diameter() const
+  {
+    return Reference::LogContactLaw::constant_from(load, delta_diameter);
+  }
+
+  namespace
+  {
+    /**
+     * Refine toward the contact point until every cell closer than 1.5 a
+     * has size <= a / n_across and, farther out, size <= a / n_across +
+     * grading (d - 1.5 a), d the distance to the contact point.
+     */
+    void
+    refine_for_contact(parallel::distributed::Triangulation<2> &triangulation,
+                       const Point<2>                          &contact_point,
+                       const double                             a,
+                       const unsigned int                       n_across,
+                       const double                             grading)
+    {
+      const double h_min = a / n_across;
+      for (unsigned int step = 0; step < 60; ++step)
+        {
+          bool any = false;
+          for (const auto &cell : triangulation.active_cell_iterators())
+            if (cell->is_locally_owned())
+              {
+                const double h = cell->diameter() / std::sqrt(2.);
+                const double d =
+                  std::max(0., cell->center().distance(contact_point) - h);
+                const double target =
+                  h_min + grading * std::max(0., d - 1.5 * a);
+                if (h > target)
+                  {
+                    cell->set_refine_flag();
+                    any = true;
+                  }
+              }
+          if (!Utilities::MPI::logical_or(any,
+                                          triangulation.get_communicator()))
+            return;
+          triangulation.execute_coarsening_and_refinement();
+        }
+    }
+
+    /// The problem at one load: mesh, operators, Newton, results.
+    class ContactProblem
+    {
+    public:
+      ContactProblem(const Parameters &parameters,
+                     double            load,
+                     unsigned int      n_across,
+                     double            grading,
+                     MPI_Comm          communicator);
+
+      /// Newton from a rigid translation toward the wall by
+      /// @p initial_compression (times R); returns the iterations used.
+      unsigned int
+      solve(double       initial_compression,
+            double       tolerance,
+            unsigned int max_iterations);
+
+      ContactLawPoint
+      results() const;
+      std::vector<std::pair<double, double>>
+      pressure_profile() const;
+      void
+      write_state(const std::string &directory, unsigned int index) const;
+
+    private:
+      /// R(u) = K u - f + contact, constrained entries zero; tangent if asked.
+      ContactState
+      residual(const PETScWrappers::MPI::Vector &u,
+               PETScWrappers::MPI::Vector       &r,
+               bool                              with_tangent);
+
+      const Parameters                       &parameters;
+      const double                            load;
+      const double                            total_force;
+      MPI_Comm                                communicator;
+      parallel::distributed::Triangulation<2> triangulation;
+      ElasticityOperator                      op;
+      std::unique_ptr<ContactOperator>        contact;
+      PETScWrappers::MPI::Vector              body_force;
+      PETScWrappers::MPI::Vector              solution;
+      unsigned int                            iterations = 0;
+      double                                  h_contact  = 0.;
+    };
+
+    ContactProblem::ContactProblem(const Parameters  &parameters,
+                                   const double       load,
+                                   const unsigned int n_across,
+                                   const double       grading,
+                                   MPI_Comm           communicator)
+        : parameters(parameters)
+        , load(load)
+        , total_force(load * M_PI *
+                      parameters.material.in_plane_young_modulus() *
+                      parameters.geometry.radius())
+        , communicator(communicator)
+        , triangulation(communicator,
+                        Triangulation<2>::limit_level_difference_at_vertices)
+        , op(parameters.finite_element.degree)
+    {
+      const auto  &geometry = parameters.geometry;
+      const double R        = geometry.radius();
+      geometry.create_triangulation(triangulation);
+      refine_for_contact(triangulation,
+                         geometry.contact_point(),
+                         Reference::hertz_half_width(load) * R,
+                         n_across,
+                         grading);
+      op.setup(triangulation, geometry, true);
+      op.assemble(parameters.material);
+
+      h_contact             = ContactOperator::smallest_edge_face(op);
+      const RigidWall &wall = parameters.contact.wall();
+      contact               = std::make_unique<ContactOperator>(
+        op,
+        wall,
+        parameters.contact.penalty_law(
+          parameters.material.in_plane_young_modulus(), h_contact),
+        geometry.center());
+
+      // Uniform body force toward the wall, P in total on the whole disk:
+      // P / 2 on the half disk, divided by the discrete area so that the
+      // force applied is exactly P / 2.
+      const double area = GridTools::volume(triangulation, op.get_mapping());
+      body_force        = op.create_vector();
+      op.assemble_body_force(-0.5 * total_force / area * wall.normal,
+                             body_force);
+      solution = op.create_vector();
+    }
+
+    ContactState
+    ContactProblem::residual(const PETScWrappers::MPI::Vector &u,
+                             PETScWrappers::MPI::Vector       &r,
+                             const bool                        with_tangent)
+    {
+      op.stiffness_matrix().vmult(r, u);
+      r -= body_force;
+      auto *tangent = with_tangent ? &op.tangent_reset_to_stiffness() : nullptr;
+      const ContactState state =
+        contact->assemble(op.create_ghosted(u), &r, tangent);
+      r.compress(VectorOperation::add);
+      if (tangent != nullptr)
+        tangent->compress(VectorOperation::add);
+      op.get_constraints().set_zero(r);
+      return state;
+    }
+
+    unsigned int
+    ContactProblem::solve(const double       initial_compression,
+                          const double       tolerance,
+                          const unsigned int max_iterations)
+    {
+      const RigidWall &wall = parameters.contact.wall();
+      VectorTools::interpolate(
+        op.get_mapping(),
+        op.get_dof_handler(),
+        Functions::ConstantFunction<2>(std::vector<double>{
+          -initial_compression * parameters.geometry.radius() * wall.normal[0],
+          -initial_compression * parameters.geometry.radius() *
+            wall.normal[1]}),
+        solution);
+      op.get_constraints().distribute(solution);
+
+      PETScWrappers::MPI::Vector r       = op.create_vector(),
+                                 r_trial = op.create_vector(),
+                                 du      = op.create_vector(),
+                                 trial   = op.create_vector();
+      const double force_scale           = body_force.l2_norm();
+      residual(solution, r, true);
+      for (iterations = 0; iterations < max_iterations; ++iterations)
+        {
+          if (r.l2_norm() <= tolerance * force_scale)
+            return iterations;
+          // Newton step with the consistent tangent (residual() left it).
+          SolverControl                    control;
+          PETScWrappers::SparseDirectMUMPS direct(control, communicator);
+          direct.set_symmetric_mode(true);
+          r *= -1.;
+          direct.solve(op.tangent_matrix(), du, r);
+          r *= -1.;
+          op.get_constraints().distribute(du);
+
+          // The energy is convex along du; its slope is r(u + s du) . du.
+          // Minimize it: s = 1 if the slope there is still negative, else
+          // the slope's root in (0, 1) by regula falsi (Illinois).
+          auto slope = [&](const double s) {
+            trial = solution;
+            trial.add(s, du);
+            residual(trial, r_trial, false);
+            return r_trial * du;
+          };
+          double step = 1.;
+          double s0 = 0., f0 = r * du, s1 = 1., f1 = slope(1.);
+          if (f1 > 0.)
+            for (unsigned int k = 0; k < 40; ++k)
+              {
+                step           = s1 - f1 * (s1 - s0) / (f1 - f0);
+                const double f = slope(step);
+                if (std::abs(f) <= 1e-3 * std::abs(r * du))
+                  break;
+                if ((f > 0.) == (f1 > 0.))
+                  f0 *= 0.5; // Illinois: keep the other end moving
+                else
+                  {
+                    s0 = s1;
+                    f0 = f1;
+                  }
+                s1 = step;
+                f1 = f;
+              }
+          trial = solution;
+          trial.add(step, du);
+          solution = trial;
+          residual(solution, r, true);
+        }
+      if (r.l2_norm() <= tolerance * force_scale)
+        return iterations;
+      throw std::runtime_error(
+        "quasistatic contact: Newton's method did not converge for load " +
+        Utilities::to_string(load) + " in " + std::to_string(max_iterations) +
+        " iterations (relative residual " +
+        Utilities::to_string(r.l2_norm() / force_scale) + ")");
+    }
+
+    ContactLawPoint
+    ContactProblem::results() const
+    {
+      const auto        &geometry = parameters.geometry;
+      const RigidWall   &wall     = parameters.contact.wall();
+      const double       R        = geometry.radius();
+      const auto         u        = op.create_ghosted(solution);
+      const ContactState state    = contact->assemble(u, nullptr, nullptr);
+
+      ContactLawPoint point;
+      point.load      = load;
+      point.delta_com = -(op.mean_displacement(u) * wall.normal) / R;
+      const Tensor<1, 2> u_contact =
+        op.vertex_displacement(u, geometry.center() - R * wall.normal);
+      const Tensor<1, 2> u_far =
+        op.vertex_displacement(u, geometry.center() + R * wall.normal);
+      point.delta_diameter = ((u_contact - u_far) * wall.normal) / R;
+      point.half_width     = state.half_width() / R;
+      point.penetration    = state.max_penetration / R;
+      // The half disk carries half the load.
+      point.force_balance     = 2. * state.force / total_force - 1.;
+      point.h_contact         = h_contact / R;
+      point.n_dofs            = op.get_dof_handler().n_dofs();
+      point.newton_iterations = iterations;
+      return point;
+    }
+
+    std::vector<std::pair<double, double>>
+    ContactProblem::pressure_profile() const
+    {
+      return contact->pressure_profile(op.create_ghosted(solution));
+    }
+
+    void
+    ContactProblem::write_state(const std::string &directory,
+                                const unsigned int index) const
+    {
+      const auto u = op.create_ghosted(solution);
+      DataOut<2> data_out;
+      data_out.attach_dof_handler(op.get_dof_handler());
+      data_out.add_data_vector(
+        u,
+        std::vector<std::string>(2, "displacement"),
+        DataOut<2>::type_dof_data,
+        std::vector<DataComponentInterpretation::DataComponentInterpretation>(
+          2, DataComponentInterpretation::component_is_part_of_vector));
+      const StressPostprocessor stress(parameters.material);
+      data_out.add_data_vector(u, stress);
+      data_out.build_patches(op.get_mapping(),
+                             op.degree(),
+                             DataOut<2>::curved_inner_cells);
+      DataOutBase::VtkFlags flags;
+      flags.compression_level =
+        DataOutBase::VtkFlags::ZlibCompressionLevel::best_speed;
+      data_out.set_flags(flags);
+      data_out.write_vtu_with_pvtu_record(
+        directory + "/", "contact", index, communicator, 3);
+    }
+  } // namespace
+
+  void
+  QuasistaticContact::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Quasistatic contact");
+    prm.declare_entry("Loads",
+                      "1e-5, 1e-4, 1e-3",
+                      Patterns::List(Patterns::Double(), 1),
+                      "Loads P / (pi E2 R) [-], each > 0 and <= 0.05; P is "
+                      "the total body force on the (full) disk per unit "
+                      "thickness.");
+    prm.declare_entry("Elements across contact",
+                      "16",
+                      Patterns::Integer(10, 1000),
+                      "Number of elements across the Hertz half-width "
+                      "a = 2 R sqrt(P / (pi E2 R)): cells closer than 1.5 a "
+                      "to the contact point get size <= a / this number.");
+    prm.declare_entry("Grading",
+                      "0.3",
+                      Patterns::Double(0.01, 1),
+                      "Growth of the element size with distance beyond 1.5 a "
+                      "from the contact point [-].");
+    prm.declare_entry("Newton tolerance",
+                      "1e-10",
+                      Patterns::Double(1e-15, 1e-3),
+                      "Newton stops when |residual| <= this times |body "
+                      "force vector| [-].");
+    prm.declare_entry("Maximum Newton iterations",
+                      "30",
+                      Patterns::Integer(1, 1000),
+                      "Newton iterations allowed per load before the run "
+                      "stops with an error.");
+    prm.leave_subsection();
+  }
+
+  void
+  QuasistaticContact::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Quasistatic contact");
+    loads = Utilities::string_to_double(
+      Utilities::split_string_list(prm.get("Loads"), ','));
+    elements_across_contact = prm.get_integer("Elements across contact");
+    grading                 = prm.get_double("Grading");
+    newton_tolerance        = prm.get_double("Newton tolerance");
+    max_newton_iterations   = prm.get_integer("Maximum Newton iterations");
+    prm.leave_subsection();
+    for (const double load : loads)
+      require(load > 0. && load <= 0.05,
+              "Quasistatic contact: every entry of 'Loads' must satisfy "
+              "0 < P/(pi E2 R) <= 0.05, got " +
+                Utilities::to_string(load));
+  }
+
+  void
+  QuasistaticContact::run(const Parameters &parameters,
+                          MPI_Comm          communicator) const
+  {
+    ConditionalOStream pcout(std::cout,
+                             Utilities::MPI::this_mpi_process(communicator) ==
+                               0);
+    const bool root = Utilities::MPI::this_mpi_process(communicator) == 0;
+    const std::string &directory = parameters.run.output_directory;
+    const double       nu2       = parameters.material.in_plane_poisson_ratio();
+
+    CsvTable law({"load",
+                  "delta_com",
+                  "delta_diameter",
+                  "half_width",
+                  "penetration",
+                  "C_com",
+                  "C_diameter",
+                  "newton_iterations",
+                  "hertz_half_width",
+                  "force_balance_error",
+                  "penalty_factor",
+                  "h_contact",
+                  "n_dofs",
+                  "poisson_ratio_2d"});
+    CsvTable profile({"load", "y", "pressure", "pressure_hertz"});
+    std::vector<std::pair<double, std::string>> records;
+
+    pcout << "     load        C_com    C_diameter   a/a_Hertz-1   "
+             "force bal.   penetration  Newton   DoFs\n";
+    for (unsigned int i = 0; i < loads.size(); ++i)
+      {
+        ContactProblem problem(
+          parameters, loads[i], elements_across_contact, grading, communicator);
+        // Start from the rigid translation whose overlap with the wall is
+        // as wide as the Hertz contact: depth a^2 / (2 R) = 2 x R.
+        problem.solve(2. * loads[i], newton_tolerance, max_newton_iterations);
+        const ContactLawPoint p = problem.results();
+
+        const double a_hertz = Reference::hertz_half_width(p.load);
+        law.start_row();
+        for (const double v : {p.load,
+                               p.delta_com,
+                               p.delta_diameter,
+                               p.half_width,
+                               p.penetration,
+                               p.constant_com(),
+                               p.constant_diameter()})
+          law.add(v);
+        law.add(p.newton_iterations);
+        for (const double v : {a_hertz,
+                               p.force_balance,
+                               parameters.contact.penalty_factor(),
+                               p.h_contact})
+          law.add(v);
+        law.add(p.n_dofs);
+        law.add(nu2);
+
+        // Pressure in units of P / R against Hertz (seed 001, eq. 46).
+        const double R = parameters.geometry.radius();
+        const double P =
+          p.load * M_PI * parameters.material.in_plane_young_modulus() * R;
+        for (const auto &[y, pressure] : problem.pressure_profile())
+          {
+            const double t = y / R;
+            profile.start_row();
+            profile.add(p.load);
+            profile.add(t);
+            profile.add(pressure * R / P);
+            profile.add(std::abs(t) < a_hertz ?
+                          2. / (M_PI * a_hertz * a_hertz) *
+                            std::sqrt(a_hertz * a_hertz - t * t) :
+                          0.);
+          }
+        problem.write_state(directory, i);
+        records.emplace_back(p.load,
+                             "contact_" + Utilities::int_to_string(i, 3) +
+                               ".pvtu");
+
+        std::ostringstream line;
+        line << std::scientific << std::setprecision(3) << std::setw(10)
+             << p.load << std::fixed << std::setprecision(6) << std::setw(12)
+             << p.constant_com() << std::setw(12) << p.constant_diameter()
+             << std::scientific << std::setprecision(2) << std::setw(14)
+             << p.half_width / a_hertz - 1. << std::setw(13) << p.force_balance
+             << std::setw(13) << p.penetration << std::setw(7)
+             << p.newton_iterations << std::setw(9) << p.n_dofs << '\n';
+        pcout << line.str() << std::flush;
+      }
+    pcout << "Seed 001, eq. 57: C = -1 - nu2 = " << -1. - nu2 << std::endl;
+    if (root)
+      {
+        law.write(directory + "/contact_law.csv");
+        profile.write(directory + "/pressure_profile.csv");
+        std::ofstream pvd(directory + "/contact.pvd");
+        DataOutBase::write_pvd_record(pvd, records);
+      }
+  }
+} // namespace DiskImpact

@@ -1,0 +1,60 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <mpi.h>
+
+#include <vector>
+
+namespace DiskImpact
+{
+  struct Parameters;
+
+  /// One converged quasistatic contact state, lengths in units of R.
+  struct ContactLawPoint
+  {
+    double       load              = 0.; ///< P / (pi E2 R)
+    double       delta_com         = 0.; ///< approach of the centre of mass
+    double       delta_diameter    = 0.; ///< shortening of the axial diameter
+    double       half_width        = 0.; ///< a / R from the pressure moments
+    double       penetration       = 0.; ///< deepest penetration / R
+    double       force_balance     = 0.; ///< int p ds / P - 1
+    double       h_contact         = 0.; ///< smallest edge face / R
+    unsigned int n_dofs            = 0;
+    unsigned int newton_iterations = 0;
+
+    double
+    constant_com() const;
+    double
+    constant_diameter() const;
+  };
+
+  /**
+   * Task 'quasistatic contact': a half disk (symmetric about the impact
+   * axis) pressed on the wall by a uniform body force of total P (seed 001,
+   * section 5: the quasistatic picture of the disk being decelerated), for a
+   * list of loads. Per load: a mesh graded toward the contact point so the
+   * elements across the whole Hertz half-width are small, then Newton's
+   * method with a backtracking line search on the penalty contact problem.
+   * Writes contact_law.csv, pressure_profile.csv and the deformed states
+   * (contact.pvd).
+   */
+  class QuasistaticContact
+  {
+  public:
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    void
+    run(const Parameters &parameters, MPI_Comm communicator) const;
+
+  private:
+    std::vector<double> loads;
+    unsigned int        elements_across_contact = 16;
+    double              grading                 = 0.3;
+    double              newton_tolerance        = 1e-10;
+    unsigned int        max_newton_iterations   = 30;
+  };
+} // namespace DiskImpact
