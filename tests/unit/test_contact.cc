@@ -1,0 +1,134 @@
+// Contact: the penalty law, the contact operator's tangent against finite
+// differences of its residual, and the log contact law with its Lambert-W
+// inverse.
+
+#include "contact.h"
+#include "contact_operator.h"
+#include "elasticity_operator.h"
+#include "geometry.h"
+#include "reference/log_contact_law.h"
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <deal.II/distributed/tria.h>
+
+#include <deal.II/numerics/vector_tools.h>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace DiskImpact;
+
+TEST_CASE("penalty law: pressure, derivative and energy", "[contact]")
+{
+  const PenaltyLaw law{250.};
+  for (const double g : {-1e-3, -2e-5, 3e-5, 1e-2})
+    {
+      CAPTURE(g);
+      const double h = 1e-9;
+      CHECK(law.pressure(g) == Approx(g < 0 ? -250. * g : 0.));
+      // p = -dE/dg, dp/dg by central differences (g away from the kink)
+      CHECK(law.pressure(g) ==
+            Approx(-(law.energy(g + h) - law.energy(g - h)) / (2 * h))
+              .epsilon(1e-6)
+              .margin(1e-12));
+      CHECK(law.pressure_derivative(g) ==
+            Approx((law.pressure(g + h) - law.pressure(g - h)) / (2 * h))
+              .epsilon(1e-6)
+              .margin(1e-12));
+    }
+}
+
+TEST_CASE("contact tangent is the derivative of the contact residual",
+          "[contact][fe]")
+{
+  dealii::ParameterHandler prm;
+  DiskGeometry::declare_parameters(prm);
+  prm.enter_subsection("Geometry");
+  prm.set("Domain", "half disk");
+  prm.set("Global refinements", "3");
+  prm.leave_subsection();
+  DiskGeometry geometry;
+  geometry.parse_parameters(prm);
+
+  dealii::parallel::distributed::Triangulation<2> triangulation(MPI_COMM_WORLD);
+  geometry.create_triangulation(triangulation);
+  ElasticityOperator op(2);
+  op.setup(triangulation, geometry, true);
+
+  const RigidWall       wall{dealii::Point<2>(0., 0.),
+                       dealii::Tensor<1, 2>({1., 0.})};
+  const PenaltyLaw      law{1e3};
+  const ContactOperator contact(op, wall, law, geometry.center());
+
+  // A state that penetrates the wall over part of the edge, and a direction.
+  auto state = op.create_vector(), direction = op.create_vector();
+  dealii::FunctionParser<2> state_function(2), direction_function(2);
+  state_function.initialize("x,y", "-0.02 + 0.01*y*y; 0.003*x*y", {});
+  direction_function.initialize("x,y", "1 + x*y; 0.5*x", {});
+  dealii::VectorTools::interpolate(op.get_mapping(),
+                                   op.get_dof_handler(),
+                                   state_function,
+                                   state);
+  dealii::VectorTools::interpolate(op.get_mapping(),
+                                   op.get_dof_handler(),
+                                   direction_function,
+                                   direction);
+  op.get_constraints().distribute(state);
+  op.get_constraints().distribute(direction);
+
+  auto residual_at = [&](const double s) {
+    auto u = state;
+    u.add(s, direction);
+    auto r = op.create_vector();
+    contact.assemble(op.create_ghosted(u), &r, nullptr);
+    r.compress(dealii::VectorOperation::add);
+    return r;
+  };
+  auto &tangent     = op.tangent_reset_to_stiffness();
+  tangent           = 0.;
+  auto       r0     = op.create_vector();
+  const auto state0 = contact.assemble(op.create_ghosted(state), &r0, &tangent);
+  tangent.compress(dealii::VectorOperation::add);
+  REQUIRE(state0.force > 0.);
+
+  // J d against (r(u + h d) - r(u - h d)) / 2h; the residual is piecewise
+  // quadratic in h, so central differences are exact up to points that
+  // change contact status within +-h (a few, hence the tolerance).
+  const double h  = 1e-7;
+  auto         jd = op.create_vector();
+  tangent.vmult(jd, direction);
+  auto difference = residual_at(h);
+  difference.add(-1., residual_at(-h));
+  difference *= 1. / (2 * h);
+  auto error = difference;
+  error.add(-1., jd);
+  CHECK(error.l2_norm() <= 1e-5 * jd.l2_norm());
+}
+
+TEST_CASE("log contact law: Lambert-W inverse round trip", "[contact]")
+{
+  for (const double constant : {-1., -1. - 0.9, -1.7437})
+    {
+      const Reference::LogContactLaw law(constant);
+      for (const double load : {1e-9, 1e-6, 1e-4, 1e-2, 5e-2})
+        {
+          CAPTURE(constant, load);
+          const double d = law.compression(load);
+          CHECK(d > 0.);
+          CHECK(law.load(d) == Approx(load).epsilon(1e-13));
+          CHECK(Reference::LogContactLaw::constant_from(load, d) ==
+                Approx(constant).epsilon(1e-12));
+        }
+      CHECK_THROWS(law.load(1.01 * law.maximum_compression()));
+    }
+  // delta = P/(pi E2) [ln(4 pi R E2 / P) + C] with R = E2 = 1, P = pi x
+  const Reference::LogContactLaw law(-1.3);
+  const double                   P = M_PI * 1e-4;
+  CHECK(law.compression(1e-4) ==
+        Approx(P / M_PI * (std::log(4. * M_PI / P) - 1.3)).epsilon(1e-14));
+  CHECK(Reference::hertz_half_width(1e-4) ==
+        Approx(std::sqrt(4. * P / M_PI)).epsilon(1e-14));
+}
