@@ -38,6 +38,19 @@ namespace DiskImpact
     pressure_derivative(double gap) const;
     double
     energy(double gap) const;
+
+    /**
+     * The pressure averaged over a time step in which the gap goes from
+     * @p g0 to @p g1, the discrete gradient of the energy:
+     * p_bar = -(energy(g1) - energy(g0)) / (g1 - g0), so that
+     * p_bar (g1 - g0) is exactly the energy released; the midpoint pressure
+     * where g1 = g0.
+     */
+    double
+    discrete_gradient_pressure(double g0, double g1) const;
+    /// d p_bar / d g1.
+    double
+    discrete_gradient_derivative(double g0, double g1) const;
   };
 
   /**

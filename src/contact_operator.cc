@@ -118,6 +118,119 @@ namespace DiskImpact
     return state;
   }
 
+  ContactState
+  ContactOperator::assemble_step(
+    const PETScWrappers::MPI::Vector &ghosted_u_old,
+    const PETScWrappers::MPI::Vector &ghosted_u_new,
+    const ContactAverage              average,
+    PETScWrappers::MPI::Vector       &residual,
+    std::vector<RankOneTerm>         *tangent_terms) const
+  {
+    const auto                          &dof_handler = op.get_dof_handler();
+    const auto                          &fe          = dof_handler.get_fe();
+    const auto                          &constraints = op.get_constraints();
+    const QGauss<1>                      quadrature(fe.degree + 3);
+    FEFaceValues<2>                      face_values(op.get_mapping(),
+                                fe,
+                                quadrature,
+                                update_values | update_quadrature_points |
+                                  update_JxW_values);
+    const unsigned int                   dofs_per_cell = fe.n_dofs_per_cell();
+    Vector<double>                       cell_residual(dofs_per_cell);
+    std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
+    std::vector<Tensor<1, 2>>            u_old(quadrature.size()),
+      u_new(quadrature.size());
+    std::vector<double>              phi_n(dofs_per_cell);
+    const FEValuesExtractors::Vector displacement(0);
+    if (tangent_terms != nullptr)
+      tangent_terms->clear();
+
+    ContactState state;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              cell->face(f)->boundary_id() == BoundaryIds::curved)
+            {
+              face_values.reinit(cell, f);
+              face_values[displacement].get_function_values(ghosted_u_old,
+                                                            u_old);
+              face_values[displacement].get_function_values(ghosted_u_new,
+                                                            u_new);
+              bool in_contact = false;
+              cell_residual   = 0.;
+              for (const unsigned int q :
+                   face_values.quadrature_point_indices())
+                {
+                  const Point<2> &x  = face_values.quadrature_point(q);
+                  const double    g0 = wall.gap(x + u_old[q]);
+                  const double    g1 = wall.gap(x + u_new[q]);
+                  if (g0 >= 0. && g1 >= 0.)
+                    continue;
+                  in_contact      = true;
+                  const double ds = face_values.JxW(q);
+                  double       p_bar, dp_bar;
+                  if (average == ContactAverage::discrete_gradient)
+                    {
+                      p_bar  = law.discrete_gradient_pressure(g0, g1);
+                      dp_bar = law.discrete_gradient_derivative(g0, g1);
+                    }
+                  else
+                    {
+                      p_bar  = 0.5 * (law.pressure(g0) + law.pressure(g1));
+                      dp_bar = 0.5 * law.pressure_derivative(g1);
+                    }
+                  const double t = (x - origin) * tangent_direction;
+                  state.force += law.pressure(g1) * ds;
+                  state.force_average += p_bar * ds;
+                  state.energy += law.energy(g1) * ds;
+                  state.second_moment += law.pressure(g1) * t * t * ds;
+                  state.max_penetration = std::max(state.max_penetration, -g1);
+
+                  for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                    {
+                      phi_n[i] =
+                        face_values[displacement].value(i, q) * wall.normal;
+                      cell_residual(i) -= p_bar * phi_n[i] * ds;
+                    }
+                  if (tangent_terms == nullptr || dp_bar == 0.)
+                    continue;
+                  // -d p_bar / d g1 (n.phi_i)(n.phi_j) ds, constraints
+                  // resolved onto the unconstrained DoFs.
+                  cell->get_dof_indices(dof_indices);
+                  RankOneTerm term;
+                  term.weight = -dp_bar * ds;
+                  for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                    {
+                      if (phi_n[i] == 0.)
+                        continue;
+                      const auto *entries =
+                        constraints.get_constraint_entries(dof_indices[i]);
+                      if (entries == nullptr)
+                        term.entries.emplace_back(dof_indices[i], phi_n[i]);
+                      else
+                        for (const auto &[j, weight] : *entries)
+                          term.entries.emplace_back(j, weight * phi_n[i]);
+                    }
+                  tangent_terms->push_back(std::move(term));
+                }
+              if (!in_contact)
+                continue;
+              cell->get_dof_indices(dof_indices);
+              constraints.distribute_local_to_global(cell_residual,
+                                                     dof_indices,
+                                                     residual);
+            }
+
+    const MPI_Comm comm   = dof_handler.get_communicator();
+    state.force           = Utilities::MPI::sum(state.force, comm);
+    state.force_average   = Utilities::MPI::sum(state.force_average, comm);
+    state.energy          = Utilities::MPI::sum(state.energy, comm);
+    state.second_moment   = Utilities::MPI::sum(state.second_moment, comm);
+    state.max_penetration = Utilities::MPI::max(state.max_penetration, comm);
+    return state;
+  }
+
   std::vector<std::pair<double, double>>
   ContactOperator::pressure_profile(
     const PETScWrappers::MPI::Vector &ghosted_u) const

@@ -2,6 +2,8 @@
 
 #include "input_error.h"
 
+#include <deal.II/base/mpi.h>
+
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/manifold_lib.h>
@@ -15,6 +17,36 @@
 namespace DiskImpact
 {
   using namespace dealii;
+
+  void
+  refine_toward_contact(Triangulation<2>  &triangulation,
+                        const Point<2>    &contact_point,
+                        const double       a,
+                        const unsigned int n_across,
+                        const double       grading)
+  {
+    const double h_min = a / n_across;
+    for (unsigned int step = 0; step < 60; ++step)
+      {
+        bool any = false;
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              const double h = cell->diameter() / std::sqrt(2.);
+              const double d =
+                std::max(0., cell->center().distance(contact_point) - h);
+              const double target = h_min + grading * std::max(0., d - 1.5 * a);
+              if (h > target)
+                {
+                  cell->set_refine_flag();
+                  any = true;
+                }
+            }
+        if (!Utilities::MPI::logical_or(any, triangulation.get_communicator()))
+          return;
+        triangulation.execute_coarsening_and_refinement();
+      }
+  }
 
   void
   DiskGeometry::declare_parameters(ParameterHandler &prm)

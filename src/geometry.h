@@ -25,6 +25,20 @@ namespace DiskImpact
   constexpr dealii::types::manifold_id curved_manifold_id = 1;
 
   /**
+   * Refine toward @p contact_point until every cell closer than 1.5 a has
+   * size <= a / n_across and, farther out, size <= a / n_across +
+   * grading (d - 1.5 a), d the distance to the contact point: the elements
+   * across the whole contact zone of half-width a, not only the smallest,
+   * resolve it.
+   */
+  void
+  refine_toward_contact(dealii::Triangulation<2> &triangulation,
+                        const dealii::Point<2>   &contact_point,
+                        double                    a,
+                        unsigned int              n_across,
+                        double                    grading);
+
+  /**
    * The disk: radius, full or half domain, built-in or gmsh mesh, global
    * refinement and graded refinement toward the contact point.
    *

@@ -21,6 +21,8 @@ namespace DiskImpact
     ModalConvergenceStudy::declare_parameters(prm);
     ContactParameters::declare_parameters(prm);
     QuasistaticContact::declare_parameters(prm);
+    TimeIntegrator::declare_parameters(prm);
+    Impact::declare_parameters(prm);
   }
 
   void
@@ -34,6 +36,8 @@ namespace DiskImpact
     modal_convergence.parse_parameters(prm);
     contact.parse_parameters(prm);
     quasistatic_contact.parse_parameters(prm);
+    time_integrator.parse_parameters(prm);
+    impact.parse_parameters(prm);
 
     // Checks across subsections.
     if (run.task == Task::quasistatic_contact)
@@ -44,6 +48,8 @@ namespace DiskImpact
                 "not)");
         contact.check_wall(geometry, 0.);
       }
+    if (run.task == Task::impact)
+      contact.check_wall(geometry, 0.05);
   }
 
   void

@@ -6,8 +6,10 @@
 #include "material.h"
 #include "modal_solver.h"
 #include "run_parameters.h"
+#include "tasks/impact.h"
 #include "tasks/modal_convergence_study.h"
 #include "tasks/quasistatic_contact.h"
+#include "time_integrator.h"
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -34,6 +36,8 @@ namespace DiskImpact
     ModalConvergenceStudy   modal_convergence;
     ContactParameters       contact;
     QuasistaticContact      quasistatic_contact;
+    TimeIntegrator          time_integrator;
+    Impact                  impact;
   };
 
   /**

@@ -11,17 +11,19 @@ namespace DiskImpact
   void
   RunParameters::declare_parameters(ParameterHandler &prm)
   {
-    prm.declare_entry("Task",
-                      "modal analysis",
-                      Patterns::Selection(
-                        "modal analysis|modal convergence|quasistatic contact"),
-                      "What to compute. 'modal analysis': the lowest modes of "
-                      "the free disk compared with the analytic Bessel modes "
-                      "(modes.csv). 'modal convergence': the same on a "
-                      "sequence of meshes and degrees, with observed orders "
-                      "(modal_convergence.csv). 'quasistatic contact': a half "
-                      "disk pressed on the wall by a body force, the contact "
-                      "law delta(P) (contact_law.csv).");
+    prm.declare_entry(
+      "Task",
+      "modal analysis",
+      Patterns::Selection(
+        "modal analysis|modal convergence|quasistatic contact|impact"),
+      "What to compute. 'modal analysis': the lowest modes of "
+      "the free disk compared with the analytic Bessel modes "
+      "(modes.csv). 'modal convergence': the same on a "
+      "sequence of meshes and degrees, with observed orders "
+      "(modal_convergence.csv). 'quasistatic contact': a half "
+      "disk pressed on the wall by a body force, the contact "
+      "law delta(P) (contact_law.csv). 'impact': the disk hits "
+      "the wall with speed v (impact.csv, summary.csv).");
     prm.declare_entry("Output directory",
                       "output/modal",
                       Patterns::Anything(),
@@ -35,7 +37,8 @@ namespace DiskImpact
     const std::map<std::string, Task> tasks{
       {"modal analysis", Task::modal_analysis},
       {"modal convergence", Task::modal_convergence},
-      {"quasistatic contact", Task::quasistatic_contact}};
+      {"quasistatic contact", Task::quasistatic_contact},
+      {"impact", Task::impact}};
     task             = tasks.at(prm.get("Task"));
     output_directory = prm.get("Output directory");
     require(!output_directory.empty(), "'Output directory' must not be empty");

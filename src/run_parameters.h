@@ -11,7 +11,8 @@ namespace DiskImpact
   {
     modal_analysis,
     modal_convergence,
-    quasistatic_contact
+    quasistatic_contact,
+    impact
   };
 
   /**

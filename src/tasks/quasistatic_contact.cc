@@ -46,43 +46,6 @@ namespace DiskImpact
 
   namespace
   {
-    /**
-     * Refine toward the contact point until every cell closer than 1.5 a
-     * has size <= a / n_across and, farther out, size <= a / n_across +
-     * grading (d - 1.5 a), d the distance to the contact point.
-     */
-    void
-    refine_for_contact(parallel::distributed::Triangulation<2> &triangulation,
-                       const Point<2>                          &contact_point,
-                       const double                             a,
-                       const unsigned int                       n_across,
-                       const double                             grading)
-    {
-      const double h_min = a / n_across;
-      for (unsigned int step = 0; step < 60; ++step)
-        {
-          bool any = false;
-          for (const auto &cell : triangulation.active_cell_iterators())
-            if (cell->is_locally_owned())
-              {
-                const double h = cell->diameter() / std::sqrt(2.);
-                const double d =
-                  std::max(0., cell->center().distance(contact_point) - h);
-                const double target =
-                  h_min + grading * std::max(0., d - 1.5 * a);
-                if (h > target)
-                  {
-                    cell->set_refine_flag();
-                    any = true;
-                  }
-              }
-          if (!Utilities::MPI::logical_or(any,
-                                          triangulation.get_communicator()))
-            return;
-          triangulation.execute_coarsening_and_refinement();
-        }
-    }
-
     /// The problem at one load: mesh, operators, Newton, results.
     class ContactProblem
     {
@@ -145,11 +108,11 @@ namespace DiskImpact
       const auto  &geometry = parameters.geometry;
       const double R        = geometry.radius();
       geometry.create_triangulation(triangulation);
-      refine_for_contact(triangulation,
-                         geometry.contact_point(),
-                         Reference::hertz_half_width(load) * R,
-                         n_across,
-                         grading);
+      refine_toward_contact(triangulation,
+                            geometry.contact_point(),
+                            Reference::hertz_half_width(load) * R,
+                            n_across,
+                            grading);
       op.setup(triangulation, geometry, true);
       op.assemble(parameters.material);
 

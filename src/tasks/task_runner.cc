@@ -1,6 +1,7 @@
 #include "tasks/task_runner.h"
 
 #include "parameters.h"
+#include "tasks/impact_task.h"
 #include "tasks/modal_analysis_task.h"
 
 #include <deal.II/base/conditional_ostream.h>
@@ -61,6 +62,9 @@ namespace DiskImpact
           break;
         case Task::quasistatic_contact:
           parameters.quasistatic_contact.run(parameters, communicator);
+          break;
+        case Task::impact:
+          run_impact(parameters, communicator);
           break;
       }
   }

@@ -41,6 +41,37 @@ TEST_CASE("penalty law: pressure, derivative and energy", "[contact]")
     }
 }
 
+TEST_CASE("penalty law: discrete gradient releases the exact energy",
+          "[contact]")
+{
+  const PenaltyLaw law{300.};
+  const double     pairs[][2] = {{1e-3, -2e-3},
+                                 {-2e-3, 1e-3},
+                                 {-1e-3, -3e-3},
+                                 {2e-3, 5e-3},
+                                 {-1e-3, -1e-3},
+                                 {-1e-3, -1e-3 + 1e-16}};
+  for (const auto &[g0, g1] : pairs)
+    {
+      CAPTURE(g0, g1);
+      const double p = law.discrete_gradient_pressure(g0, g1);
+      CHECK(p >= 0.);
+      if (g0 != g1)
+        CHECK(p * (g1 - g0) ==
+              Approx(-(law.energy(g1) - law.energy(g0))).margin(1e-16));
+      else
+        CHECK(p == Approx(law.pressure(g0)));
+      const double h = 1e-9;
+      if (std::abs(g1 - g0) > 1e-6 && g1 != 0.)
+        CHECK(law.discrete_gradient_derivative(g0, g1) ==
+              Approx((law.discrete_gradient_pressure(g0, g1 + h) -
+                      law.discrete_gradient_pressure(g0, g1 - h)) /
+                     (2 * h))
+                .epsilon(1e-5)
+                .margin(1e-9));
+    }
+}
+
 TEST_CASE("contact tangent is the derivative of the contact residual",
           "[contact][fe]")
 {

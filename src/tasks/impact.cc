@@ -1,0 +1,429 @@
+#include "tasks/impact.h"
+
+#include "contact_operator.h"
+#include "csv_table.h"
+#include "elasticity_operator.h"
+#include "input_error.h"
+#include "low_rank_corrected_solver.h"
+#include "parameters.h"
+#include "reference/log_contact_law.h"
+#include "reference/one_dof_impact.h"
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/function.h>
+#include <deal.II/base/utilities.h>
+
+#include <deal.II/distributed/tria.h>
+
+#include <deal.II/grid/grid_tools.h>
+
+#include <deal.II/numerics/vector_tools.h>
+
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+
+namespace DiskImpact
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /// The contact-law constant of the 1-DOF model: "fit" is the measured
+    /// C_com = -1 - 2/pi - nu2/4 (docs/contact-law.md), else a number.
+    double
+    parse_contact_law_constant(const std::string &text, const double nu2)
+    {
+      if (text == "fit")
+        return -1. - 2. / M_PI - nu2 / 4.;
+      try
+        {
+          return std::stod(text);
+        }
+      catch (const std::exception &)
+        {
+          throw InputError("Impact: 'Contact law constant' must be 'fit' or "
+                           "a number, got '" +
+                           text + "'");
+        }
+    }
+
+    /// The time series of one impact.
+    CsvTable
+    time_series_table()
+    {
+      return CsvTable({"time",
+                       "x_com",
+                       "v_com",
+                       "contact_force",
+                       "contact_half_width",
+                       "energy_kinetic",
+                       "energy_translational",
+                       "energy_strain",
+                       "energy_contact",
+                       "energy_dissipated",
+                       "energy_total"});
+    }
+  } // namespace
+
+  void
+  Impact::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Impact");
+    prm.declare_entry("Velocity",
+                      "0.01",
+                      Patterns::Double(),
+                      "Impact speed v_i in units of c = sqrt(E2 / rho) [-], "
+                      "0 < v_i <= 0.5.");
+    prm.declare_entry("Elements across contact",
+                      "12",
+                      Patterns::Integer(4, 1000),
+                      "Elements across the largest Hertz half-width expected "
+                      "(from the 1-DOF model's largest force); the mesh is "
+                      "graded toward the contact point as in task "
+                      "'quasistatic contact'.");
+    prm.declare_entry("Grading",
+                      "0.3",
+                      Patterns::Double(0.01, 1),
+                      "Growth of the element size with distance from the "
+                      "contact zone [-].");
+    prm.declare_entry("Contact law constant",
+                      "fit",
+                      Patterns::Anything(),
+                      "Constant C of the log law in the 1-DOF reference model "
+                      "(time-step estimate, comparison): 'fit' for the "
+                      "measured centre-of-mass law C = -1 - 2/pi - nu2/4, or "
+                      "a number.");
+    prm.declare_entry("Margin",
+                      "0.2",
+                      Patterns::Double(0., 10.),
+                      "Time simulated after the contact force has returned to "
+                      "zero, as a fraction of the contact time [-].");
+    prm.leave_subsection();
+  }
+
+  void
+  Impact::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Impact");
+    impact_velocity         = prm.get_double("Velocity");
+    elements_across_contact = prm.get_integer("Elements across contact");
+    grading                 = prm.get_double("Grading");
+    contact_law_constant    = prm.get("Contact law constant");
+    margin                  = prm.get_double("Margin");
+    prm.leave_subsection();
+    require(impact_velocity > 0. && impact_velocity <= 0.5,
+            "Impact: 'Velocity' must satisfy 0 < v/c <= 0.5, got " +
+              Utilities::to_string(impact_velocity));
+    if (contact_law_constant != "fit")
+      parse_contact_law_constant(contact_law_constant, 0.);
+  }
+
+  double
+  Impact::velocity() const
+  {
+    return impact_velocity;
+  }
+
+  ImpactSummary
+  Impact::run(const Parameters &parameters,
+              MPI_Comm          communicator,
+              const bool        write_time_series) const
+  {
+    const bool root = Utilities::MPI::this_mpi_process(communicator) == 0;
+    ConditionalOStream pcout(std::cout, root);
+    const auto        &geometry   = parameters.geometry;
+    const auto        &material   = parameters.material;
+    const auto        &integrator = parameters.time_integrator;
+    const RigidWall   &wall       = parameters.contact.wall();
+
+    const double R      = geometry.radius();
+    const double E2     = material.in_plane_young_modulus();
+    const double c      = material.velocity_unit();
+    const double v0     = impact_velocity * c;
+    const double mass   = material.density() * M_PI * R * R;
+    const double factor = geometry.is_half_disk() ? 2. : 1.;
+
+    // The 1-DOF log-law collision: contact time (time step) and largest
+    // force (mesh); beyond the law's range, seed 001's eq. 61 estimates.
+    ImpactSummary summary;
+    summary.velocity = impact_velocity;
+    const double C =
+      parse_contact_law_constant(contact_law_constant,
+                                 material.in_plane_poisson_ratio());
+    double contact_time_estimate, largest_load;
+    try
+      {
+        const auto one_dof    = Reference::one_dof_impact(v0, mass, E2, R, C);
+        contact_time_estimate = one_dof.contact_time;
+        largest_load          = one_dof.max_force / (M_PI * E2 * R);
+        summary.one_dof_contact_time = one_dof.contact_time * c / R;
+        summary.one_dof_delta_max    = one_dof.max_compression / R;
+      }
+    catch (const std::domain_error &)
+      {
+        const double delta =
+          impact_velocity * R * std::sqrt(std::log(4. / impact_velocity));
+        contact_time_estimate = M_PI * delta / v0;
+        largest_load          = delta / (R * std::log(4. * R / delta));
+      }
+
+    // Mesh graded for the largest contact, operators, penalty.
+    parallel::distributed::Triangulation<2> triangulation(
+      communicator, Triangulation<2>::limit_level_difference_at_vertices);
+    geometry.create_triangulation(triangulation);
+    refine_toward_contact(triangulation,
+                          geometry.contact_point(),
+                          Reference::hertz_half_width(largest_load) * R,
+                          elements_across_contact,
+                          grading);
+    ElasticityOperator op(parameters.finite_element.degree);
+    op.setup(triangulation, geometry, true);
+    op.assemble(material);
+    const ContactOperator contact(
+      op,
+      wall,
+      parameters.contact.penalty_law(E2,
+                                     ContactOperator::smallest_edge_face(op)),
+      geometry.center());
+    const auto &constraints = op.get_constraints();
+    summary.n_dofs          = op.get_dof_handler().n_dofs();
+    // The discrete disk's mass (whole disk), for the momentum balance.
+    const double discrete_mass =
+      factor * material.density() *
+      GridTools::volume(triangulation, op.get_mapping());
+
+    // State: at rest relative to a uniform motion toward the wall.
+    auto u = op.create_vector(), v = op.create_vector();
+    VectorTools::interpolate(op.get_mapping(),
+                             op.get_dof_handler(),
+                             Functions::ConstantFunction<2>(std::vector<double>{
+                               -v0 * wall.normal[0], -v0 * wall.normal[1]}),
+                             v);
+    constraints.distribute(v);
+    auto u_new = op.create_vector(), v_new = op.create_vector(),
+         w = op.create_vector(), b = op.create_vector(), r = op.create_vector(),
+         du = op.create_vector(), tmp = op.create_vector();
+
+    auto quadratic_form = [&](const PETScWrappers::MPI::SparseMatrix &matrix,
+                              const PETScWrappers::MPI::Vector       &x) {
+      // On the condensed matrices, x with its constrained entries zeroed
+      // gives the form of the unconstrained field.
+      w = x;
+      constraints.set_zero(w);
+      matrix.vmult(tmp, w);
+      return 0.5 * (w * tmp);
+    };
+    auto mean_along_normal = [&](const PETScWrappers::MPI::Vector &x) {
+      return op.mean_displacement(op.create_ghosted(x)) * wall.normal;
+    };
+
+    const double energy_initial = factor * quadratic_form(op.mass_matrix(), v);
+    double       energy_error   = 0.;
+    double       impulse        = 0.;
+    const double v_com_initial  = mean_along_normal(v);
+
+    CsvTable series = time_series_table();
+    auto     record = [&](const double t, const ContactState &state) {
+      const double kinetic = factor * quadratic_form(op.mass_matrix(), v);
+      const double strain = factor * quadratic_form(op.stiffness_matrix(), u);
+      const double v_com = mean_along_normal(v);
+      const double total = kinetic + strain + factor * state.energy;
+      energy_error =
+        std::max(energy_error,
+                 std::abs(total - energy_initial) / energy_initial);
+      series.start_row();
+      for (const double value : {t * c / R,
+                                 mean_along_normal(u) / R,
+                                 v_com / c,
+                                 factor * state.force / (E2 * R),
+                                 state.half_width() / R,
+                                 kinetic,
+                                 0.5 * mass * v_com * v_com,
+                                 strain,
+                                 factor * state.energy,
+                                 0.,
+                                 total})
+        series.add(value);
+      summary.delta_max =
+        std::max(summary.delta_max, -mean_along_normal(u) / R);
+      summary.force_max =
+        std::max(summary.force_max, factor * state.force / (E2 * R));
+    };
+    record(0., ContactState());
+
+    // Effective matrix A = 2/dt^2 M + K/2, factorized once per step size.
+    double dt = integrator.time_step(contact_time_estimate);
+    std::unique_ptr<LowRankCorrectedSolver> solver;
+    auto                                    factorize = [&]() {
+      auto &A = op.tangent_reset_to_stiffness();
+      A *= TimeIntegrator::stiffness_coefficient();
+      A.add(TimeIntegrator::mass_coefficient(dt), op.mass_matrix());
+      solver = std::make_unique<LowRankCorrectedSolver>(A,
+                                                        op.locally_owned_dofs(),
+                                                        communicator);
+    };
+    factorize();
+    unsigned int factorizations_before = 0, solves_before = 0;
+
+    // One step from (u, v) to (u_new, v_new); false if Newton fails.
+    std::vector<RankOneTerm> terms;
+    ContactState             state;
+    auto                     attempt_step = [&]() {
+      const double force_scale = 2. / dt * std::sqrt(2. * energy_initial);
+      TimeIntegrator::inertia_vector(u, v, dt, w);
+      op.mass_matrix().vmult(b, w);
+      op.stiffness_matrix().vmult(tmp, u);
+      b.add(-0.5, tmp);
+      TimeIntegrator::predictor(u, v, dt, u_new);
+      constraints.distribute(u_new);
+      const auto ghosted_u = op.create_ghosted(u);
+      for (unsigned int it = 0; it <= integrator.max_newton_iterations(); ++it)
+        {
+          auto &A = op.tangent_matrix();
+          A.vmult(r, u_new);
+          r -= b;
+          state = contact.assemble_step(ghosted_u,
+                                        op.create_ghosted(u_new),
+                                        integrator.contact_average(),
+                                        r,
+                                        &terms);
+          r.compress(VectorOperation::add);
+          constraints.set_zero(r);
+          if (r.l2_norm() <= integrator.newton_tolerance() * force_scale)
+            {
+              summary.newton_iterations += it;
+              return true;
+            }
+          if (it == integrator.max_newton_iterations())
+            break;
+          r *= -1.;
+          solver->solve(terms, r, du);
+          constraints.distribute(du);
+          u_new += du;
+        }
+      return false;
+    };
+
+    const auto   start          = std::chrono::steady_clock::now();
+    double       t              = 0.;
+    double       contact_end    = -1.;
+    double       previous_force = 0., previous_time = 0.;
+    double       older_force = 0., older_time = -1.;
+    unsigned int cuts  = 0;
+    const double t_max = 20. * contact_time_estimate;
+    for (;;)
+      {
+        if (!attempt_step())
+          {
+            if (++cuts > integrator.max_step_cuts())
+              throw std::runtime_error(
+                "impact: Newton's method did not converge at t = " +
+                Utilities::to_string(t * c / R) +
+                " R/c even with the time "
+                "step halved " +
+                std::to_string(integrator.max_step_cuts()) +
+                " times; lower 'Time step fraction' or raise 'Penalty "
+                "factor'-independent tolerances");
+            factorizations_before += solver->n_factorizations();
+            solves_before += solver->n_triangular_solves();
+            dt *= 0.5;
+            factorize();
+            continue;
+          }
+        TimeIntegrator::velocity_update(u, u_new, v, dt, v_new);
+        constraints.distribute(v_new);
+        impulse += dt * factor * state.force_average;
+        u = u_new;
+        v = v_new;
+        t += dt;
+        ++summary.steps;
+        record(t, state);
+
+        // The collision ends when the force returns to zero (seed 002);
+        // the zero crossing is interpolated linearly.
+        if (state.force > 0.)
+          contact_end = -1.;
+        else if (contact_end < 0. && previous_force > 0.)
+          {
+            // extrapolate the last two positive forces to zero, within
+            // the step in which the force vanished
+            const double slope =
+              (previous_force - older_force) / (previous_time - older_time);
+            contact_end =
+              slope < 0. ? std::min(t, previous_time - previous_force / slope) :
+                           previous_time;
+          }
+        if (contact_end >= 0. && t >= contact_end * (1. + margin))
+          break;
+        if (t > t_max)
+          throw std::runtime_error("impact: the contact has not ended after " +
+                                   Utilities::to_string(t_max * c / R) +
+                                   " R/c");
+        older_force    = previous_force;
+        older_time     = previous_time;
+        previous_force = state.force;
+        previous_time  = t;
+      }
+    summary.wall_time_loop =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+        .count();
+
+    const double v_com_final = mean_along_normal(v);
+    summary.epsilon          = -v_com_final / v_com_initial;
+    summary.contact_time     = contact_end * c / R;
+    summary.energy_error     = energy_error;
+    summary.impulse_error =
+      std::abs(discrete_mass * (v_com_final - v_com_initial) - impulse) /
+      (discrete_mass * v0);
+    summary.factorizations = factorizations_before + solver->n_factorizations();
+    summary.triangular_solves = solves_before + solver->n_triangular_solves();
+    summary.time_step         = dt * c / R;
+
+    if (write_time_series && root)
+      series.write(parameters.run.output_directory + "/impact.csv");
+    return summary;
+  }
+
+  void
+  Impact::write_summary(const ImpactSummary &s, const std::string &filename)
+  {
+    CsvTable table({"velocity",
+                    "epsilon",
+                    "contact_time",
+                    "delta_max",
+                    "force_max",
+                    "energy_error",
+                    "steps",
+                    "newton_iterations",
+                    "impulse_error",
+                    "time_step",
+                    "n_dofs",
+                    "factorizations",
+                    "triangular_solves",
+                    "one_dof_contact_time",
+                    "one_dof_delta_max"});
+    table.start_row();
+    for (const double value : {s.velocity,
+                               s.epsilon,
+                               s.contact_time,
+                               s.delta_max,
+                               s.force_max,
+                               s.energy_error})
+      table.add(value);
+    table.add(s.steps);
+    table.add(s.newton_iterations);
+    table.add(s.impulse_error);
+    table.add(s.time_step);
+    table.add(s.n_dofs);
+    table.add(s.factorizations);
+    table.add(s.triangular_solves);
+    table.add(s.one_dof_contact_time);
+    table.add(s.one_dof_delta_max);
+    table.write(filename);
+  }
+} // namespace DiskImpact

@@ -1,0 +1,70 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <mpi.h>
+
+#include <string>
+
+namespace DiskImpact
+{
+  struct Parameters;
+
+  /// What one impact gives (lengths in units of R, velocities of c).
+  struct ImpactSummary
+  {
+    double       velocity             = 0.; ///< v_i / c
+    double       epsilon              = 0.; ///< -v_com,final / v_com,initial
+    double       contact_time         = 0.; ///< [R / c]
+    double       delta_max            = 0.; ///< largest centre-of-mass approach
+    double       force_max            = 0.; ///< largest force / (E2 R)
+    double       energy_error         = 0.; ///< max |E(t) - E(0)| / E(0)
+    double       impulse_error        = 0.; ///< |m dv - sum F dt| / (m v_i)
+    unsigned int steps                = 0;
+    unsigned int newton_iterations    = 0;
+    unsigned int factorizations       = 0;
+    unsigned int triangular_solves    = 0;
+    unsigned int n_dofs               = 0;
+    double       time_step            = 0.; ///< [R / c]
+    double       wall_time_loop       = 0.; ///< time stepping only [s]
+    double       one_dof_contact_time = 0.; ///< 1-DOF log law [R / c]
+    double       one_dof_delta_max    = 0.; ///< 1-DOF log law, / R
+  };
+
+  /**
+   * Task 'impact': the disk, undeformed, moving toward the wall with speed
+   * v (subsection Impact), touching it at t = 0. Implicit time integration
+   * (TimeIntegrator) with Newton's method for the penalty contact, one
+   * factorization of the effective matrix and a low-rank correction for the
+   * contact (LowRankCorrectedSolver); runs until the contact force has
+   * returned to zero (seed 002) plus a margin. Writes impact.csv and
+   * summary.csv.
+   */
+  class Impact
+  {
+  public:
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    double
+    velocity() const;
+
+    ImpactSummary
+    run(const Parameters &parameters,
+        MPI_Comm          communicator,
+        bool              write_time_series = true) const;
+
+    /// summary.csv with one row.
+    static void
+    write_summary(const ImpactSummary &summary, const std::string &filename);
+
+  private:
+    double       impact_velocity         = 0.01;
+    unsigned int elements_across_contact = 12;
+    double       grading                 = 0.3;
+    std::string  contact_law_constant    = "fit";
+    double       margin                  = 0.2;
+  };
+} // namespace DiskImpact

@@ -1,0 +1,45 @@
+#include "tasks/impact_task.h"
+
+#include "parameters.h"
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/utilities.h>
+
+#include <iostream>
+#include <sstream>
+
+namespace DiskImpact
+{
+  using namespace dealii;
+
+  void
+  run_impact(const Parameters &parameters, MPI_Comm communicator)
+  {
+    ConditionalOStream pcout(std::cout,
+                             Utilities::MPI::this_mpi_process(communicator) ==
+                               0);
+    pcout << "Impact at v = " << parameters.impact.velocity() << " c"
+          << std::endl;
+    const ImpactSummary s = parameters.impact.run(parameters, communicator);
+    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+      Impact::write_summary(s,
+                            parameters.run.output_directory + "/summary.csv");
+    std::ostringstream out;
+    out.precision(8);
+    out << "  DoFs " << s.n_dofs << ", time step " << s.time_step
+        << " R/c, steps " << s.steps << ", Newton iterations "
+        << s.newton_iterations << ", factorizations " << s.factorizations
+        << ", triangular solves " << s.triangular_solves << "\n"
+        << "  epsilon = " << s.epsilon << "\n"
+        << "  contact time = " << s.contact_time
+        << " R/c (1-DOF log law: " << s.one_dof_contact_time << ")\n"
+        << "  delta_max = " << s.delta_max
+        << " R (1-DOF log law: " << s.one_dof_delta_max << ")\n"
+        << "  force_max = " << s.force_max << " E2 R\n"
+        << "  energy error = " << s.energy_error
+        << ", impulse error = " << s.impulse_error << "\n"
+        << "  time stepping: " << s.wall_time_loop << " s, "
+        << s.wall_time_loop / s.steps * 1e3 << " ms per step\n";
+    pcout << out.str();
+  }
+} // namespace DiskImpact

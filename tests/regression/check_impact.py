@@ -1,0 +1,43 @@
+#!/usr/bin/python3
+"""Assertions on summary.csv of task 'impact'.
+
+usage: check_impact.py summary.csv [--epsilon E TOL] [--energy TOL]
+       [--impulse TOL] [--one-dof TOL] [--factorizations N]
+"""
+import argparse
+import csv
+import sys
+
+p = argparse.ArgumentParser()
+p.add_argument("summary")
+p.add_argument("--epsilon", nargs=2, type=float, metavar=("VALUE", "TOL"))
+p.add_argument("--energy", type=float, help="bound on energy_error")
+p.add_argument("--impulse", type=float, help="bound on impulse_error")
+p.add_argument("--one-dof", type=float,
+               help="relative bound on contact time and delta_max vs the 1-DOF model")
+p.add_argument("--factorizations", type=int)
+a = p.parse_args()
+s = next(csv.DictReader(open(a.summary, newline="")))
+checks = []
+if a.epsilon:
+    checks.append(("epsilon", float(s["epsilon"]),
+                   abs(float(s["epsilon"]) - a.epsilon[0]) <= a.epsilon[1]))
+if a.energy is not None:
+    checks.append(("energy_error", float(s["energy_error"]),
+                   float(s["energy_error"]) <= a.energy))
+if a.impulse is not None:
+    checks.append(("impulse_error", float(s["impulse_error"]),
+                   float(s["impulse_error"]) <= a.impulse))
+if a.one_dof is not None:
+    for fe, ref in (("contact_time", "one_dof_contact_time"),
+                    ("delta_max", "one_dof_delta_max")):
+        rel = float(s[fe]) / float(s[ref]) - 1
+        checks.append((fe + " / 1-DOF - 1", rel, abs(rel) <= a.one_dof))
+if a.factorizations is not None:
+    checks.append(("factorizations", int(s["factorizations"]),
+                   int(s["factorizations"]) == a.factorizations))
+failures = 0
+for name, value, ok in checks:
+    failures += not ok
+    print(f"{name:28s} {value: .6g} {'ok' if ok else 'FAIL'}")
+sys.exit(1 if failures else 0)
