@@ -5,6 +5,7 @@
 #include <deal.II/lac/lapack_full_matrix.h>
 
 #include <algorithm>
+#include <chrono>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -62,6 +63,12 @@ namespace DiskImpact
     return triangular_solves;
   }
 
+  double
+  LowRankCorrectedSolver::triangular_solve_time() const
+  {
+    return solve_seconds;
+  }
+
   unsigned int
   LowRankCorrectedSolver::n_contact_dofs() const
   {
@@ -72,7 +79,11 @@ namespace DiskImpact
   LowRankCorrectedSolver::apply_inverse(const PETScWrappers::MPI::Vector &r,
                                         PETScWrappers::MPI::Vector       &y)
   {
+    const auto start = std::chrono::steady_clock::now();
     check(KSPSolve(ksp, r, y), "KSPSolve");
+    solve_seconds +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+        .count();
     ++triangular_solves;
   }
 

@@ -53,6 +53,9 @@ namespace DiskImpact
     /// Size of C.
     unsigned int
     n_contact_dofs() const;
+    /// Wall time spent in solves with A [s].
+    double
+    triangular_solve_time() const;
 
   private:
     void
@@ -74,5 +77,6 @@ namespace DiskImpact
     dealii::FullMatrix<double>                              s_matrix;
     unsigned int                                            factorizations = 0;
     unsigned int triangular_solves                                         = 0;
+    double       solve_seconds                                             = 0.;
   };
 } // namespace DiskImpact

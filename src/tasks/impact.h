@@ -13,22 +13,24 @@ namespace DiskImpact
   /// What one impact gives (lengths in units of R, velocities of c).
   struct ImpactSummary
   {
-    double       velocity             = 0.; ///< v_i / c
-    double       epsilon              = 0.; ///< -v_com,final / v_com,initial
-    double       contact_time         = 0.; ///< [R / c]
-    double       delta_max            = 0.; ///< largest centre-of-mass approach
-    double       force_max            = 0.; ///< largest force / (E2 R)
-    double       energy_error         = 0.; ///< max |E(t) - E(0)| / E(0)
-    double       impulse_error        = 0.; ///< |m dv - sum F dt| / (m v_i)
-    unsigned int steps                = 0;
-    unsigned int newton_iterations    = 0;
-    unsigned int factorizations       = 0;
-    unsigned int triangular_solves    = 0;
-    unsigned int n_dofs               = 0;
-    double       time_step            = 0.; ///< [R / c]
-    double       wall_time_loop       = 0.; ///< time stepping only [s]
-    double       one_dof_contact_time = 0.; ///< 1-DOF log law [R / c]
-    double       one_dof_delta_max    = 0.; ///< 1-DOF log law, / R
+    double       velocity          = 0.; ///< v_i / c
+    double       epsilon           = 0.; ///< -v_com,final / v_com,initial
+    double       contact_time      = 0.; ///< [R / c]
+    double       delta_max         = 0.; ///< largest centre-of-mass approach
+    double       force_max         = 0.; ///< largest force / (E2 R)
+    double       energy_error      = 0.; ///< max |E(t) - E(0)| / E(0)
+    double       impulse_error     = 0.; ///< |m dv - sum F dt| / (m v_i)
+    unsigned int steps             = 0;
+    unsigned int newton_iterations = 0;
+    unsigned int factorizations    = 0;
+    unsigned int triangular_solves = 0;
+    unsigned int n_dofs            = 0;
+    double       time_step         = 0.;     ///< [R / c]
+    double       wall_time_loop    = 0.;     ///< time stepping only [s]
+    double       triangular_solve_time = 0.; ///< mean time of one solve [s]
+    unsigned int contact_dofs          = 0;  ///< DoFs of the low-rank part
+    double       one_dof_contact_time  = 0.; ///< 1-DOF log law [R / c]
+    double       one_dof_delta_max     = 0.; ///< 1-DOF log law, / R
   };
 
   /**
@@ -37,8 +39,8 @@ namespace DiskImpact
    * (TimeIntegrator) with Newton's method for the penalty contact, one
    * factorization of the effective matrix and a low-rank correction for the
    * contact (LowRankCorrectedSolver); runs until the contact force has
-   * returned to zero (seed 002) plus a margin. Writes impact.csv and
-   * summary.csv.
+   * returned to zero (seed 002) plus a margin. Writes impact.csv,
+   * summary.csv and impact.pvd.
    */
   class Impact
   {
@@ -66,5 +68,6 @@ namespace DiskImpact
     double       grading                 = 0.3;
     std::string  contact_law_constant    = "fit";
     double       margin                  = 0.2;
+    unsigned int output_interval         = 20;
   };
 } // namespace DiskImpact

@@ -39,7 +39,11 @@ namespace DiskImpact
         << "  energy error = " << s.energy_error
         << ", impulse error = " << s.impulse_error << "\n"
         << "  time stepping: " << s.wall_time_loop << " s, "
-        << s.wall_time_loop / s.steps * 1e3 << " ms per step\n";
+        << s.wall_time_loop / s.steps * 1e3 << " ms per step = "
+        << s.wall_time_loop / s.steps / s.triangular_solve_time
+        << " solves with the factorized matrix (one: "
+        << s.triangular_solve_time * 1e3 << " ms); " << s.contact_dofs
+        << " contact DoFs in the low-rank part\n";
     pcout << out.str();
   }
 } // namespace DiskImpact

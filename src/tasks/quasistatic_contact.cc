@@ -6,9 +6,10 @@
 #include "input_error.h"
 #include "parameters.h"
 #include "reference/log_contact_law.h"
-#include "stress_postprocessor.h"
+#include "state_output.h"
 
 #include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/data_out_base.h>
 #include <deal.II/base/function.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
@@ -19,7 +20,6 @@
 
 #include <deal.II/lac/petsc_solver.h>
 
-#include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/vector_tools.h>
 
 #include <cmath>
@@ -67,7 +67,8 @@ namespace DiskImpact
       results() const;
       std::vector<std::pair<double, double>>
       pressure_profile() const;
-      void
+      /// The deformed state with stresses; returns the .pvtu's name.
+      std::string
       write_state(const std::string &directory, unsigned int index) const;
 
     private:
@@ -262,30 +263,16 @@ namespace DiskImpact
       return contact->pressure_profile(op.create_ghosted(solution));
     }
 
-    void
+    std::string
     ContactProblem::write_state(const std::string &directory,
                                 const unsigned int index) const
     {
-      const auto u = op.create_ghosted(solution);
-      DataOut<2> data_out;
-      data_out.attach_dof_handler(op.get_dof_handler());
-      data_out.add_data_vector(
-        u,
-        std::vector<std::string>(2, "displacement"),
-        DataOut<2>::type_dof_data,
-        std::vector<DataComponentInterpretation::DataComponentInterpretation>(
-          2, DataComponentInterpretation::component_is_part_of_vector));
-      const StressPostprocessor stress(parameters.material);
-      data_out.add_data_vector(u, stress);
-      data_out.build_patches(op.get_mapping(),
-                             op.degree(),
-                             DataOut<2>::curved_inner_cells);
-      DataOutBase::VtkFlags flags;
-      flags.compression_level =
-        DataOutBase::VtkFlags::ZlibCompressionLevel::best_speed;
-      data_out.set_flags(flags);
-      data_out.write_vtu_with_pvtu_record(
-        directory + "/", "contact", index, communicator, 3);
+      return write_deformed_state(op,
+                                  parameters.material,
+                                  op.create_ghosted(solution),
+                                  directory,
+                                  "contact",
+                                  index);
     }
   } // namespace
 
@@ -415,10 +402,7 @@ namespace DiskImpact
                             std::sqrt(a_hertz * a_hertz - t * t) :
                           0.);
           }
-        problem.write_state(directory, i);
-        records.emplace_back(p.load,
-                             "contact_" + Utilities::int_to_string(i, 3) +
-                               ".pvtu");
+        records.emplace_back(p.load, problem.write_state(directory, i));
 
         std::ostringstream line;
         line << std::scientific << std::setprecision(3) << std::setw(10)

@@ -1,0 +1,24 @@
+#pragma once
+
+#include <deal.II/lac/petsc_vector.h>
+
+#include <string>
+
+namespace DiskImpact
+{
+  class ElasticityOperator;
+  class Material;
+
+  /**
+   * Write a displacement field and its stress (deal.II DataOut, curved
+   * patches of the element degree) as DIRECTORY/BASENAME_NNN.pvtu with one
+   * .vtu per rank; returns the .pvtu's name relative to @p directory.
+   */
+  std::string
+  write_deformed_state(const ElasticityOperator                 &op,
+                       const Material                           &material,
+                       const dealii::PETScWrappers::MPI::Vector &ghosted_u,
+                       const std::string                        &directory,
+                       const std::string                        &basename,
+                       unsigned int                              index);
+} // namespace DiskImpact
