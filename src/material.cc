@@ -96,6 +96,20 @@ namespace DiskImpact
     relaxation_tau = relaxation_time;
   }
 
+  double
+  Material::poisson_ratio() const
+  {
+    return poisson;
+  }
+
+  Material
+  Material::with_poisson_ratio(const double nu) const
+  {
+    Material other = *this;
+    other.set(model, young, nu, rho, relaxation_tau);
+    return other;
+  }
+
   PlaneModel
   Material::plane_model() const
   {

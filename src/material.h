@@ -38,6 +38,14 @@ namespace DiskImpact
         double     density,
         double     relaxation_time = 0.);
 
+    /// The Poisson ratio as given (3D for plane strain).
+    double
+    poisson_ratio() const;
+
+    /// The same material with another Poisson ratio (checked).
+    Material
+    with_poisson_ratio(double nu) const;
+
     PlaneModel
     plane_model() const;
     std::string

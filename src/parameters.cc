@@ -48,7 +48,7 @@ namespace DiskImpact
                 "not)");
         contact.check_wall(geometry, 0.);
       }
-    if (run.task == Task::impact)
+    if (run.task == Task::impact || run.task == Task::sweep)
       contact.check_wall(geometry, 0.05);
   }
 

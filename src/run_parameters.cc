@@ -15,7 +15,7 @@ namespace DiskImpact
       "Task",
       "modal analysis",
       Patterns::Selection(
-        "modal analysis|modal convergence|quasistatic contact|impact"),
+        "modal analysis|modal convergence|quasistatic contact|impact|sweep"),
       "What to compute. 'modal analysis': the lowest modes of "
       "the free disk compared with the analytic Bessel modes "
       "(modes.csv). 'modal convergence': the same on a "
@@ -23,7 +23,9 @@ namespace DiskImpact
       "(modal_convergence.csv). 'quasistatic contact': a half "
       "disk pressed on the wall by a body force, the contact "
       "law delta(P) (contact_law.csv). 'impact': the disk hits "
-      "the wall with speed v (impact.csv, summary.csv).");
+      "the wall with speed v (impact.csv, summary.csv). 'sweep': "
+      "epsilon(v) for the velocities of subsection Impact "
+      "(restitution.csv).");
     prm.declare_entry("Output directory",
                       "output/modal",
                       Patterns::Anything(),
@@ -38,7 +40,8 @@ namespace DiskImpact
       {"modal analysis", Task::modal_analysis},
       {"modal convergence", Task::modal_convergence},
       {"quasistatic contact", Task::quasistatic_contact},
-      {"impact", Task::impact}};
+      {"impact", Task::impact},
+      {"sweep", Task::sweep}};
     task             = tasks.at(prm.get("Task"));
     output_directory = prm.get("Output directory");
     require(!output_directory.empty(), "'Output directory' must not be empty");

@@ -12,7 +12,8 @@ namespace DiskImpact
     modal_analysis,
     modal_convergence,
     quasistatic_contact,
-    impact
+    impact,
+    sweep
   };
 
   /**

@@ -90,6 +90,15 @@ namespace DiskImpact
     return n_step_cuts;
   }
 
+  TimeIntegrator
+  TimeIntegrator::refined() const
+  {
+    TimeIntegrator finer = *this;
+    finer.fixed_time_step *= 0.5;
+    finer.time_step_fraction *= 0.5;
+    return finer;
+  }
+
   double
   TimeIntegrator::mass_coefficient(const double dt)
   {

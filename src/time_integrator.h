@@ -43,6 +43,9 @@ namespace DiskImpact
     max_newton_iterations() const;
     unsigned int
     max_step_cuts() const;
+    /// The same scheme with half the time step.
+    TimeIntegrator
+    refined() const;
 
     /// A = mass_coefficient M + stiffness_coefficient K.
     static double

@@ -106,6 +106,23 @@ namespace DiskImpact
                       Patterns::Integer(0),
                       "Write the deformed state with stresses (impact.pvd) "
                       "every this many steps; 0: only the final state.");
+    prm.declare_entry("Velocities",
+                      "0.005, 0.01, 0.02, 0.05, 0.1, 0.2, 0.3",
+                      Patterns::List(Patterns::Double(), 0),
+                      "Task 'sweep': the impact speeds v_i / c [-].");
+    prm.declare_entry("Poisson ratios",
+                      "",
+                      Patterns::List(Patterns::Double(), 0),
+                      "Task 'sweep': Poisson ratios (as 'Poisson ratio' of "
+                      "subsection Material) [-]; empty: the material's.");
+    prm.declare_entry("Error estimate",
+                      "true",
+                      Patterns::Bool(),
+                      "Task 'sweep': also run each point with one more global "
+                      "refinement, twice the elements across the contact, "
+                      "half the time step and four times the penalty factor; "
+                      "report that epsilon and |difference| as "
+                      "epsilon_error.");
     prm.declare_entry("Margin",
                       "0.2",
                       Patterns::Double(0., 10.),
@@ -124,6 +141,16 @@ namespace DiskImpact
     contact_law_constant    = prm.get("Contact law constant");
     margin                  = prm.get_double("Margin");
     output_interval         = prm.get_integer("Output interval");
+    sweep_velocities        = Utilities::string_to_double(
+      Utilities::split_string_list(prm.get("Velocities"), ','));
+    sweep_poisson_ratios = Utilities::string_to_double(
+      Utilities::split_string_list(prm.get("Poisson ratios"), ','));
+    error_estimate = prm.get_bool("Error estimate");
+    for (const double v : sweep_velocities)
+      require(v > 0. && v <= 0.5,
+              "Impact: every entry of 'Velocities' must satisfy 0 < v/c <= "
+              "0.5, got " +
+                Utilities::to_string(v));
     prm.leave_subsection();
     require(impact_velocity > 0. && impact_velocity <= 0.5,
             "Impact: 'Velocity' must satisfy 0 < v/c <= 0.5, got " +
@@ -136,6 +163,38 @@ namespace DiskImpact
   Impact::velocity() const
   {
     return impact_velocity;
+  }
+
+  void
+  Impact::set_velocity(const double v)
+  {
+    impact_velocity = v;
+  }
+
+  const std::vector<double> &
+  Impact::velocities() const
+  {
+    return sweep_velocities;
+  }
+
+  const std::vector<double> &
+  Impact::poisson_ratios() const
+  {
+    return sweep_poisson_ratios;
+  }
+
+  bool
+  Impact::estimate_errors() const
+  {
+    return error_estimate;
+  }
+
+  Impact
+  Impact::refined() const
+  {
+    Impact finer                  = *this;
+    finer.elements_across_contact = 2 * elements_across_contact;
+    return finer;
   }
 
   ImpactSummary

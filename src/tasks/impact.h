@@ -5,6 +5,7 @@
 #include <mpi.h>
 
 #include <string>
+#include <vector>
 
 namespace DiskImpact
 {
@@ -52,6 +53,18 @@ namespace DiskImpact
 
     double
     velocity() const;
+    void
+    set_velocity(double v);
+    /// The sweep's velocities and Poisson ratios (empty: the material's).
+    const std::vector<double> &
+    velocities() const;
+    const std::vector<double> &
+    poisson_ratios() const;
+    bool
+    estimate_errors() const;
+    /// The same impact with twice the elements across the contact.
+    Impact
+    refined() const;
 
     ImpactSummary
     run(const Parameters &parameters,
@@ -63,11 +76,14 @@ namespace DiskImpact
     write_summary(const ImpactSummary &summary, const std::string &filename);
 
   private:
-    double       impact_velocity         = 0.01;
-    unsigned int elements_across_contact = 12;
-    double       grading                 = 0.3;
-    std::string  contact_law_constant    = "fit";
-    double       margin                  = 0.2;
-    unsigned int output_interval         = 20;
+    double              impact_velocity = 0.01;
+    std::vector<double> sweep_velocities;
+    std::vector<double> sweep_poisson_ratios;
+    bool                error_estimate          = true;
+    unsigned int        elements_across_contact = 12;
+    double              grading                 = 0.3;
+    std::string         contact_law_constant    = "fit";
+    double              margin                  = 0.2;
+    unsigned int        output_interval         = 20;
   };
 } // namespace DiskImpact

@@ -3,6 +3,7 @@
 #include "parameters.h"
 #include "tasks/impact_task.h"
 #include "tasks/modal_analysis_task.h"
+#include "tasks/sweep_task.h"
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/utilities.h>
@@ -65,6 +66,9 @@ namespace DiskImpact
           break;
         case Task::impact:
           run_impact(parameters, communicator);
+          break;
+        case Task::sweep:
+          run_sweep(parameters, communicator);
           break;
       }
   }
