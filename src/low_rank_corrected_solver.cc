@@ -1,5 +1,7 @@
 #include "low_rank_corrected_solver.h"
 
+#include "petsc_check.h"
+
 #include <deal.II/base/mpi.h>
 
 #include <deal.II/lac/lapack_full_matrix.h>
@@ -14,18 +16,6 @@ namespace DiskImpact
 {
   using namespace dealii;
 
-  namespace
-  {
-    void
-    check(const PetscErrorCode code, const char *call)
-    {
-      if (code != 0)
-        throw std::runtime_error(std::string("PETSc call ") + call +
-                                 " failed with error code " +
-                                 std::to_string(code));
-    }
-  } // namespace
-
   LowRankCorrectedSolver::LowRankCorrectedSolver(
     const PETScWrappers::MPI::SparseMatrix &A,
     const IndexSet                         &locally_owned,
@@ -34,14 +24,14 @@ namespace DiskImpact
       , communicator(communicator)
   {
     PC pc;
-    check(KSPCreate(communicator, &ksp), "KSPCreate");
-    check(KSPSetOperators(ksp, A, A), "KSPSetOperators");
-    check(KSPSetType(ksp, KSPPREONLY), "KSPSetType");
-    check(KSPGetPC(ksp, &pc), "KSPGetPC");
-    check(PCSetType(pc, PCCHOLESKY), "PCSetType");
-    check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS),
-          "PCFactorSetMatSolverType");
-    check(KSPSetUp(ksp), "KSPSetUp");
+    check_petsc(KSPCreate(communicator, &ksp), "KSPCreate");
+    check_petsc(KSPSetOperators(ksp, A, A), "KSPSetOperators");
+    check_petsc(KSPSetType(ksp, KSPPREONLY), "KSPSetType");
+    check_petsc(KSPGetPC(ksp, &pc), "KSPGetPC");
+    check_petsc(PCSetType(pc, PCCHOLESKY), "PCSetType");
+    check_petsc(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS),
+                "PCFactorSetMatSolverType");
+    check_petsc(KSPSetUp(ksp), "KSPSetUp");
     ++factorizations;
   }
 
@@ -80,7 +70,7 @@ namespace DiskImpact
                                         PETScWrappers::MPI::Vector       &y)
   {
     const auto start = std::chrono::steady_clock::now();
-    check(KSPSolve(ksp, r, y), "KSPSolve");
+    check_petsc(KSPSolve(ksp, r, y), "KSPSolve");
     solve_seconds +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
         .count();

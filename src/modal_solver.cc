@@ -1,6 +1,7 @@
 #include "modal_solver.h"
 
 #include "elasticity_operator.h"
+#include "petsc_check.h"
 
 #include <slepceps.h>
 
@@ -13,18 +14,6 @@
 namespace DiskImpact
 {
   using namespace dealii;
-
-  namespace
-  {
-    void
-    check(const PetscErrorCode code, const char *call)
-    {
-      if (code != 0)
-        throw std::runtime_error(std::string("SLEPc/PETSc call ") + call +
-                                 " failed with error code " +
-                                 std::to_string(code));
-    }
-  } // namespace
 
   double
   ModalBasis::omega(const unsigned int i) const
@@ -84,41 +73,46 @@ namespace DiskImpact
   {
     const Mat stiffness = op.stiffness_matrix();
     const Mat mass      = op.mass_matrix();
-    check(MatSetOption(stiffness, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
-    check(MatSetOption(mass, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
+    check_petsc(MatSetOption(stiffness, MAT_SYMMETRIC, PETSC_TRUE),
+                "MatSetOption");
+    check_petsc(MatSetOption(mass, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
 
     EPS eps;
-    check(EPSCreate(op.get_dof_handler().get_communicator(), &eps),
-          "EPSCreate");
-    check(EPSSetOperators(eps, stiffness, mass), "EPSSetOperators");
-    check(EPSSetProblemType(eps, EPS_GHEP), "EPSSetProblemType");
-    check(EPSSetType(eps, EPSKRYLOVSCHUR), "EPSSetType");
-    check(EPSSetDimensions(eps, n_wanted, PETSC_DEFAULT, PETSC_DEFAULT),
-          "EPSSetDimensions");
-    check(EPSSetTolerances(eps, relative_tolerance, 1000), "EPSSetTolerances");
-    check(EPSSetConvergenceTest(eps, EPS_CONV_REL), "EPSSetConvergenceTest");
-    check(EPSSetTarget(eps, shift), "EPSSetTarget");
-    check(EPSSetWhichEigenpairs(eps, EPS_TARGET_REAL), "EPSSetWhichEigenpairs");
+    check_petsc(EPSCreate(op.get_dof_handler().get_communicator(), &eps),
+                "EPSCreate");
+    check_petsc(EPSSetOperators(eps, stiffness, mass), "EPSSetOperators");
+    check_petsc(EPSSetProblemType(eps, EPS_GHEP), "EPSSetProblemType");
+    check_petsc(EPSSetType(eps, EPSKRYLOVSCHUR), "EPSSetType");
+    check_petsc(EPSSetDimensions(eps, n_wanted, PETSC_DEFAULT, PETSC_DEFAULT),
+                "EPSSetDimensions");
+    check_petsc(EPSSetTolerances(eps, relative_tolerance, 1000),
+                "EPSSetTolerances");
+    check_petsc(EPSSetConvergenceTest(eps, EPS_CONV_REL),
+                "EPSSetConvergenceTest");
+    check_petsc(EPSSetTarget(eps, shift), "EPSSetTarget");
+    check_petsc(EPSSetWhichEigenpairs(eps, EPS_TARGET_REAL),
+                "EPSSetWhichEigenpairs");
 
     // Shift-and-invert: (K - shift M)^{-1} M, the shifted matrix factorized
     // once by MUMPS (M's sparsity pattern is a subset of K's).
     ST  st;
     KSP ksp;
     PC  pc;
-    check(EPSGetST(eps, &st), "EPSGetST");
-    check(STSetType(st, STSINVERT), "STSetType");
-    check(STSetMatStructure(st, SUBSET_NONZERO_PATTERN), "STSetMatStructure");
-    check(STGetKSP(st, &ksp), "STGetKSP");
-    check(KSPSetType(ksp, KSPPREONLY), "KSPSetType");
-    check(KSPGetPC(ksp, &pc), "KSPGetPC");
-    check(PCSetType(pc, PCCHOLESKY), "PCSetType");
-    check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS),
-          "PCFactorSetMatSolverType");
-    check(EPSSetFromOptions(eps), "EPSSetFromOptions");
+    check_petsc(EPSGetST(eps, &st), "EPSGetST");
+    check_petsc(STSetType(st, STSINVERT), "STSetType");
+    check_petsc(STSetMatStructure(st, SUBSET_NONZERO_PATTERN),
+                "STSetMatStructure");
+    check_petsc(STGetKSP(st, &ksp), "STGetKSP");
+    check_petsc(KSPSetType(ksp, KSPPREONLY), "KSPSetType");
+    check_petsc(KSPGetPC(ksp, &pc), "KSPGetPC");
+    check_petsc(PCSetType(pc, PCCHOLESKY), "PCSetType");
+    check_petsc(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS),
+                "PCFactorSetMatSolverType");
+    check_petsc(EPSSetFromOptions(eps), "EPSSetFromOptions");
 
-    check(EPSSolve(eps), "EPSSolve");
+    check_petsc(EPSSolve(eps), "EPSSolve");
     PetscInt n_converged = 0;
-    check(EPSGetConverged(eps, &n_converged), "EPSGetConverged");
+    check_petsc(EPSGetConverged(eps, &n_converged), "EPSGetConverged");
     if (n_converged < static_cast<PetscInt>(n_wanted))
       throw std::runtime_error("the eigensolver converged " +
                                std::to_string(n_converged) + " of " +
@@ -130,12 +124,12 @@ namespace DiskImpact
       {
         vectors.push_back(op.create_vector());
         PetscScalar real, imaginary;
-        check(
+        check_petsc(
           EPSGetEigenpair(eps, i, &real, &imaginary, vectors.back(), nullptr),
           "EPSGetEigenpair");
         values[i] = PetscRealPart(real);
       }
-    check(EPSDestroy(&eps), "EPSDestroy");
+    check_petsc(EPSDestroy(&eps), "EPSDestroy");
 
     // SLEPc may return more pairs than asked for, not always sorted.
     std::vector<unsigned int> order(n_converged);
