@@ -300,13 +300,14 @@ namespace DiskImpact
       const double kinetic = factor * quadratic_form(op.mass_matrix(), v);
       const double strain = factor * quadratic_form(op.stiffness_matrix(), u);
       const double v_com = mean_along_normal(v);
+      const double x_com = mean_along_normal(u) / R;
       const double total = kinetic + strain + factor * state.energy;
       energy_error =
         std::max(energy_error,
                  std::abs(total - energy_initial) / energy_initial);
       series.start_row();
       for (const double value : {t * c / R,
-                                 mean_along_normal(u) / R,
+                                 x_com,
                                  v_com / c,
                                  factor * state.force / (E2 * R),
                                  state.half_width() / R,
@@ -317,8 +318,7 @@ namespace DiskImpact
                                  0.,
                                  total})
         series.add(value);
-      summary.delta_max =
-        std::max(summary.delta_max, -mean_along_normal(u) / R);
+      summary.delta_max = std::max(summary.delta_max, -x_com);
       summary.force_max =
         std::max(summary.force_max, factor * state.force / (E2 * R));
     };
