@@ -57,58 +57,52 @@ namespace DiskImpact
     const FEValuesExtractors::Vector     displacement(0);
 
     ContactState state;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const auto f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
-              cell->face(f)->boundary_id() == BoundaryIds::curved)
-            {
-              face_values.reinit(cell, f);
-              face_values[displacement].get_function_values(ghosted_u, u);
-              bool in_contact = false;
-              cell_residual   = 0.;
-              cell_tangent    = 0.;
-              for (const unsigned int q :
-                   face_values.quadrature_point_indices())
-                {
-                  const Point<2> x   = face_values.quadrature_point(q) + u[q];
-                  const double   gap = wall.gap(x);
-                  if (gap >= 0.)
-                    continue;
-                  in_contact      = true;
-                  const double p  = law.pressure(gap);
-                  const double ds = face_values.JxW(q);
-                  // Hertz's coordinate: along the undeformed edge (the
-                  // deformed edge is shorter by a strain of order a / R).
-                  const double t = (face_values.quadrature_point(q) - origin) *
-                                   tangent_direction;
-                  state.force += p * ds;
-                  state.energy += law.energy(gap) * ds;
-                  state.second_moment += p * t * t * ds;
-                  state.max_penetration = std::max(state.max_penetration, -gap);
-                  for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                    phi_n[i] =
-                      face_values[displacement].value(i, q) * wall.normal;
-                  for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                    {
-                      cell_residual(i) -= p * phi_n[i] * ds;
-                      for (unsigned int j = 0; j < dofs_per_cell; ++j)
-                        cell_tangent(i, j) -= law.pressure_derivative(gap) *
-                                              phi_n[i] * phi_n[j] * ds;
-                    }
-                }
-              if (!in_contact)
-                continue;
-              cell->get_dof_indices(dof_indices);
-              if (residual != nullptr)
-                op.get_constraints().distribute_local_to_global(cell_residual,
-                                                                dof_indices,
-                                                                *residual);
-              if (tangent != nullptr)
-                op.get_constraints().distribute_local_to_global(cell_tangent,
-                                                                dof_indices,
-                                                                *tangent);
-            }
+    for_each_curved_edge_face(
+      dof_handler, [&](const auto &cell, const unsigned int f) {
+        face_values.reinit(cell, f);
+        face_values[displacement].get_function_values(ghosted_u, u);
+        bool in_contact = false;
+        cell_residual   = 0.;
+        cell_tangent    = 0.;
+        for (const unsigned int q : face_values.quadrature_point_indices())
+          {
+            const Point<2> x   = face_values.quadrature_point(q) + u[q];
+            const double   gap = wall.gap(x);
+            if (gap >= 0.)
+              continue;
+            in_contact      = true;
+            const double p  = law.pressure(gap);
+            const double ds = face_values.JxW(q);
+            // Hertz's coordinate: along the undeformed edge (the
+            // deformed edge is shorter by a strain of order a / R).
+            const double t =
+              (face_values.quadrature_point(q) - origin) * tangent_direction;
+            state.force += p * ds;
+            state.energy += law.energy(gap) * ds;
+            state.second_moment += p * t * t * ds;
+            state.max_penetration = std::max(state.max_penetration, -gap);
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              phi_n[i] = face_values[displacement].value(i, q) * wall.normal;
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              {
+                cell_residual(i) -= p * phi_n[i] * ds;
+                for (unsigned int j = 0; j < dofs_per_cell; ++j)
+                  cell_tangent(i, j) -=
+                    law.pressure_derivative(gap) * phi_n[i] * phi_n[j] * ds;
+              }
+          }
+        if (!in_contact)
+          return;
+        cell->get_dof_indices(dof_indices);
+        if (residual != nullptr)
+          op.get_constraints().distribute_local_to_global(cell_residual,
+                                                          dof_indices,
+                                                          *residual);
+        if (tangent != nullptr)
+          op.get_constraints().distribute_local_to_global(cell_tangent,
+                                                          dof_indices,
+                                                          *tangent);
+      });
 
     const MPI_Comm comm   = dof_handler.get_communicator();
     state.force           = Utilities::MPI::sum(state.force, comm);
@@ -146,81 +140,73 @@ namespace DiskImpact
       tangent_terms->clear();
 
     ContactState state;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const auto f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
-              cell->face(f)->boundary_id() == BoundaryIds::curved)
-            {
-              face_values.reinit(cell, f);
-              face_values[displacement].get_function_values(ghosted_u_old,
-                                                            u_old);
-              face_values[displacement].get_function_values(ghosted_u_new,
-                                                            u_new);
-              bool in_contact = false;
-              cell_residual   = 0.;
-              for (const unsigned int q :
-                   face_values.quadrature_point_indices())
-                {
-                  const Point<2> &x  = face_values.quadrature_point(q);
-                  const double    g0 = wall.gap(x + u_old[q]);
-                  const double    g1 = wall.gap(x + u_new[q]);
-                  if (g0 >= 0. && g1 >= 0.)
-                    continue;
-                  in_contact      = true;
-                  const double ds = face_values.JxW(q);
-                  double       p_bar, dp_bar;
-                  if (average == ContactAverage::discrete_gradient)
-                    {
-                      p_bar  = law.discrete_gradient_pressure(g0, g1);
-                      dp_bar = law.discrete_gradient_derivative(g0, g1);
-                    }
-                  else
-                    {
-                      p_bar  = 0.5 * (law.pressure(g0) + law.pressure(g1));
-                      dp_bar = 0.5 * law.pressure_derivative(g1);
-                    }
-                  const double t = (x - origin) * tangent_direction;
-                  state.force += law.pressure(g1) * ds;
-                  state.force_average += p_bar * ds;
-                  state.energy += law.energy(g1) * ds;
-                  state.second_moment += law.pressure(g1) * t * t * ds;
-                  state.max_penetration = std::max(state.max_penetration, -g1);
+    for_each_curved_edge_face(
+      dof_handler, [&](const auto &cell, const unsigned int f) {
+        face_values.reinit(cell, f);
+        face_values[displacement].get_function_values(ghosted_u_old, u_old);
+        face_values[displacement].get_function_values(ghosted_u_new, u_new);
+        bool in_contact = false;
+        cell_residual   = 0.;
+        for (const unsigned int q : face_values.quadrature_point_indices())
+          {
+            const Point<2> &x  = face_values.quadrature_point(q);
+            const double    g0 = wall.gap(x + u_old[q]);
+            const double    g1 = wall.gap(x + u_new[q]);
+            if (g0 >= 0. && g1 >= 0.)
+              continue;
+            in_contact      = true;
+            const double ds = face_values.JxW(q);
+            double       p_bar, dp_bar;
+            if (average == ContactAverage::discrete_gradient)
+              {
+                p_bar  = law.discrete_gradient_pressure(g0, g1);
+                dp_bar = law.discrete_gradient_derivative(g0, g1);
+              }
+            else
+              {
+                p_bar  = 0.5 * (law.pressure(g0) + law.pressure(g1));
+                dp_bar = 0.5 * law.pressure_derivative(g1);
+              }
+            const double t = (x - origin) * tangent_direction;
+            state.force += law.pressure(g1) * ds;
+            state.force_average += p_bar * ds;
+            state.energy += law.energy(g1) * ds;
+            state.second_moment += law.pressure(g1) * t * t * ds;
+            state.max_penetration = std::max(state.max_penetration, -g1);
 
-                  for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                    {
-                      phi_n[i] =
-                        face_values[displacement].value(i, q) * wall.normal;
-                      cell_residual(i) -= p_bar * phi_n[i] * ds;
-                    }
-                  if (tangent_terms == nullptr || dp_bar == 0.)
-                    continue;
-                  // -d p_bar / d g1 (n.phi_i)(n.phi_j) ds, constraints
-                  // resolved onto the unconstrained DoFs.
-                  cell->get_dof_indices(dof_indices);
-                  RankOneTerm term;
-                  term.weight = -dp_bar * ds;
-                  for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                    {
-                      if (phi_n[i] == 0.)
-                        continue;
-                      const auto *entries =
-                        constraints.get_constraint_entries(dof_indices[i]);
-                      if (entries == nullptr)
-                        term.entries.emplace_back(dof_indices[i], phi_n[i]);
-                      else
-                        for (const auto &[j, weight] : *entries)
-                          term.entries.emplace_back(j, weight * phi_n[i]);
-                    }
-                  tangent_terms->push_back(std::move(term));
-                }
-              if (!in_contact)
-                continue;
-              cell->get_dof_indices(dof_indices);
-              constraints.distribute_local_to_global(cell_residual,
-                                                     dof_indices,
-                                                     residual);
-            }
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              {
+                phi_n[i] = face_values[displacement].value(i, q) * wall.normal;
+                cell_residual(i) -= p_bar * phi_n[i] * ds;
+              }
+            if (tangent_terms == nullptr || dp_bar == 0.)
+              continue;
+            // -d p_bar / d g1 (n.phi_i)(n.phi_j) ds, constraints
+            // resolved onto the unconstrained DoFs.
+            cell->get_dof_indices(dof_indices);
+            RankOneTerm term;
+            term.weight = -dp_bar * ds;
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              {
+                if (phi_n[i] == 0.)
+                  continue;
+                const auto *entries =
+                  constraints.get_constraint_entries(dof_indices[i]);
+                if (entries == nullptr)
+                  term.entries.emplace_back(dof_indices[i], phi_n[i]);
+                else
+                  for (const auto &[j, weight] : *entries)
+                    term.entries.emplace_back(j, weight * phi_n[i]);
+              }
+            tangent_terms->push_back(std::move(term));
+          }
+        if (!in_contact)
+          return;
+        cell->get_dof_indices(dof_indices);
+        constraints.distribute_local_to_global(cell_residual,
+                                               dof_indices,
+                                               residual);
+      });
 
     const MPI_Comm comm   = dof_handler.get_communicator();
     state.force           = Utilities::MPI::sum(state.force, comm);
@@ -243,27 +229,21 @@ namespace DiskImpact
                                 update_values | update_quadrature_points);
     std::vector<Tensor<1, 2>> u(quadrature.size());
     std::vector<std::pair<double, double>> samples;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const auto f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
-              cell->face(f)->boundary_id() == BoundaryIds::curved)
-            {
-              face_values.reinit(cell, f);
-              face_values[FEValuesExtractors::Vector(0)].get_function_values(
-                ghosted_u, u);
-              for (const unsigned int q :
-                   face_values.quadrature_point_indices())
-                {
-                  const Point<2> x = face_values.quadrature_point(q) + u[q];
-                  const double   p = law.pressure(wall.gap(x));
-                  if (p > 0.)
-                    samples.emplace_back((face_values.quadrature_point(q) -
-                                          origin) *
-                                           tangent_direction,
-                                         p);
-                }
-            }
+    for_each_curved_edge_face(
+      dof_handler, [&](const auto &cell, const unsigned int f) {
+        face_values.reinit(cell, f);
+        face_values[FEValuesExtractors::Vector(0)].get_function_values(
+          ghosted_u, u);
+        for (const unsigned int q : face_values.quadrature_point_indices())
+          {
+            const Point<2> x = face_values.quadrature_point(q) + u[q];
+            const double   p = law.pressure(wall.gap(x));
+            if (p > 0.)
+              samples.emplace_back((face_values.quadrature_point(q) - origin) *
+                                     tangent_direction,
+                                   p);
+          }
+      });
     std::vector<std::pair<double, double>> all;
     for (const auto &part :
          Utilities::MPI::all_gather(dof_handler.get_communicator(), samples))
@@ -276,12 +256,11 @@ namespace DiskImpact
   ContactOperator::smallest_edge_face(const ElasticityOperator &op)
   {
     double smallest = std::numeric_limits<double>::max();
-    for (const auto &cell : op.get_dof_handler().active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const auto f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
-              cell->face(f)->boundary_id() == BoundaryIds::curved)
-            smallest = std::min(smallest, cell->face(f)->measure());
+    for_each_curved_edge_face(op.get_dof_handler(),
+                              [&](const auto &cell, const unsigned int f) {
+                                smallest =
+                                  std::min(smallest, cell->face(f)->measure());
+                              });
     return Utilities::MPI::min(smallest,
                                op.get_dof_handler().get_communicator());
   }

@@ -4,6 +4,8 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
+#include <deal.II/dofs/dof_handler.h>
+
 #include <deal.II/grid/tria.h>
 
 #include <string>
@@ -23,6 +25,21 @@ namespace DiskImpact
 
   /// Manifold id of the curved edge.
   constexpr dealii::types::manifold_id curved_manifold_id = 1;
+
+  /// Call @p f(cell, face_number) for every face on the curved edge of the
+  /// locally owned cells of @p dof_handler.
+  template <typename Function>
+  void
+  for_each_curved_edge_face(const dealii::DoFHandler<2> &dof_handler,
+                            Function                   &&f)
+  {
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto face : cell->face_indices())
+          if (cell->face(face)->at_boundary() &&
+              cell->face(face)->boundary_id() == BoundaryIds::curved)
+            f(cell, face);
+  }
 
   /**
    * Refine toward @p contact_point until every cell closer than 1.5 a has

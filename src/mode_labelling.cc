@@ -59,39 +59,33 @@ namespace DiskImpact
     std::vector<Vector<double>> u(quadrature.size(), Vector<double>(2));
     const Point<2>              center = geometry.center();
 
-    for (const auto &cell : op.get_dof_handler().active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const auto f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
-              cell->face(f)->boundary_id() == BoundaryIds::curved)
-            {
-              face_values.reinit(cell, f);
-              face_values.get_function_values(displacement, u);
-              for (const unsigned int q :
-                   face_values.quadrature_point_indices())
-                {
-                  const Tensor<1, 2> x =
-                    face_values.quadrature_point(q) - center;
-                  const double phi   = std::atan2(x[1], x[0]);
-                  const double c     = std::cos(phi);
-                  const double s     = std::sin(phi);
-                  const double u_r   = u[q][0] * c + u[q][1] * s;
-                  const double u_phi = -u[q][0] * s + u[q][1] * c;
-                  const double dphi  = face_values.JxW(q) / x.norm();
-                  for (unsigned int n = 0; n < n_orders; ++n)
-                    {
-                      const double cn  = std::cos(n * phi) * dphi;
-                      const double sn  = std::sin(n * phi) * dphi;
-                      double      *out = &sums[6 * n];
-                      out[0] += u_r * cn;
-                      out[1] += u_r * sn;
-                      out[2] += u_phi * cn;
-                      out[3] += u_phi * sn;
-                      out[4] += std::cos(n * phi) * cn;
-                      out[5] += std::sin(n * phi) * sn;
-                    }
-                }
-            }
+    for_each_curved_edge_face(
+      op.get_dof_handler(), [&](const auto &cell, const unsigned int f) {
+        face_values.reinit(cell, f);
+        face_values.get_function_values(displacement, u);
+        for (const unsigned int q : face_values.quadrature_point_indices())
+          {
+            const Tensor<1, 2> x     = face_values.quadrature_point(q) - center;
+            const double       phi   = std::atan2(x[1], x[0]);
+            const double       c     = std::cos(phi);
+            const double       s     = std::sin(phi);
+            const double       u_r   = u[q][0] * c + u[q][1] * s;
+            const double       u_phi = -u[q][0] * s + u[q][1] * c;
+            const double       dphi  = face_values.JxW(q) / x.norm();
+            for (unsigned int n = 0; n < n_orders; ++n)
+              {
+                const double cn  = std::cos(n * phi) * dphi;
+                const double sn  = std::sin(n * phi) * dphi;
+                double      *out = &sums[6 * n];
+                out[0] += u_r * cn;
+                out[1] += u_r * sn;
+                out[2] += u_phi * cn;
+                out[3] += u_phi * sn;
+                out[4] += std::cos(n * phi) * cn;
+                out[5] += std::sin(n * phi) * sn;
+              }
+          }
+      });
     Utilities::MPI::sum(sums, op.get_dof_handler().get_communicator(), sums);
 
     // On the half circle cos(n phi) and sin(m phi) are not orthogonal; the
