@@ -117,6 +117,7 @@ namespace DiskImpact
     const PETScWrappers::MPI::Vector &ghosted_u_old,
     const PETScWrappers::MPI::Vector &ghosted_u_new,
     const ContactAverage              average,
+    const double                      new_weight,
     PETScWrappers::MPI::Vector       &residual,
     std::vector<RankOneTerm>         *tangent_terms) const
   {
@@ -164,8 +165,9 @@ namespace DiskImpact
               }
             else
               {
-                p_bar  = 0.5 * (law.pressure(g0) + law.pressure(g1));
-                dp_bar = 0.5 * law.pressure_derivative(g1);
+                p_bar = (1. - new_weight) * law.pressure(g0) +
+                        new_weight * law.pressure(g1);
+                dp_bar = new_weight * law.pressure_derivative(g1);
               }
             const double t = (x - origin) * tangent_direction;
             state.force += law.pressure(g1) * ds;

@@ -16,7 +16,7 @@ namespace DiskImpact
   /// start (g0) and end (g1).
   enum class ContactAverage
   {
-    trapezoidal,      ///< (p(g0) + p(g1)) / 2: Newmark's average acceleration
+    trapezoidal,      ///< (1 - w) p(g0) + w p(g1): Newmark, generalized-alpha
     discrete_gradient ///< -(E(g1) - E(g0)) / (g1 - g0): conserves energy
   };
 
@@ -78,7 +78,9 @@ namespace DiskImpact
 
     /**
      * The contact force of a time step from @p ghosted_u_old to
-     * @p ghosted_u_new, averaged as @p average: its residual contribution is
+     * @p ghosted_u_new, averaged as @p average (with the weight
+     * @p new_weight of the new state if trapezoidal): its residual
+     * contribution is
      * added to @p residual (the caller compresses), the tangent with respect
      * to the new state is returned as rank-one terms in @p tangent_terms
      * (locally owned faces only). The returned state is that of the new
@@ -88,6 +90,7 @@ namespace DiskImpact
     assemble_step(const dealii::PETScWrappers::MPI::Vector &ghosted_u_old,
                   const dealii::PETScWrappers::MPI::Vector &ghosted_u_new,
                   ContactAverage                            average,
+                  double                                    new_weight,
                   dealii::PETScWrappers::MPI::Vector       &residual,
                   std::vector<RankOneTerm> *tangent_terms) const;
 

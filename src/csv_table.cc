@@ -1,7 +1,10 @@
 #include "csv_table.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -71,6 +74,61 @@ namespace DiskImpact
   CsvTable::n_rows() const
   {
     return rows.size();
+  }
+
+  const std::vector<std::string> &
+  CsvTable::column_names() const
+  {
+    return header;
+  }
+
+  namespace
+  {
+    /// A cell as a number: NaN if empty; throws unless it is all a number.
+    double
+    parse_cell(const std::string &cell, const std::string &where)
+    {
+      if (cell.empty())
+        return std::numeric_limits<double>::quiet_NaN();
+      char        *end   = nullptr;
+      const double value = std::strtod(cell.c_str(), &end);
+      if (end != cell.c_str() + cell.size())
+        throw std::invalid_argument("CsvTable: " + where + " holds '" + cell +
+                                    "', which is not a number");
+      return value;
+    }
+  } // namespace
+
+  std::vector<double>
+  CsvTable::column(const std::string &name) const
+  {
+    const auto          cells = text_column(name);
+    std::vector<double> values;
+    values.reserve(cells.size());
+    for (unsigned int r = 0; r < cells.size(); ++r)
+      values.push_back(
+        parse_cell(cells[r],
+                   "column '" + name + "', row " + std::to_string(r)));
+    return values;
+  }
+
+  std::vector<std::string>
+  CsvTable::text_column(const std::string &name) const
+  {
+    const auto found = std::find(header.begin(), header.end(), name);
+    if (found == header.end())
+      throw std::invalid_argument("CsvTable: no column named '" + name + "'");
+    const std::size_t        index = found - header.begin();
+    std::vector<std::string> cells;
+    cells.reserve(rows.size());
+    for (unsigned int r = 0; r < rows.size(); ++r)
+      {
+        if (rows[r].size() != header.size())
+          throw std::logic_error("CsvTable: row " + std::to_string(r) +
+                                 " is incomplete");
+        cells.push_back(rows[r][index]);
+      }
+    return cells;
   }
 
   void

@@ -35,6 +35,21 @@ namespace DiskImpact
     unsigned int
     n_rows() const;
 
+    /// The header: the column names, left to right.
+    const std::vector<std::string> &
+    column_names() const;
+
+    /**
+     * The cells of column @p name parsed back into numbers; an empty cell
+     * gives NaN. Throws std::invalid_argument if there is no such column or
+     * a cell is not a number, std::logic_error if a row is incomplete.
+     */
+    std::vector<double>
+    column(const std::string &name) const;
+    /// The cells of column @p name as written (same errors as column()).
+    std::vector<std::string>
+    text_column(const std::string &name) const;
+
     /// Write to @p filename through a temporary file and a rename.
     void
     write(const std::string &filename) const;

@@ -16,6 +16,8 @@
 
 #include <deal.II/numerics/vector_tools.h>
 
+#include <limits>
+
 namespace DiskImpact
 {
   using namespace dealii;
@@ -80,6 +82,7 @@ namespace DiskImpact
         constraints,
         ComponentMask(std::vector<bool>{false, true}));
     constraints.close();
+    massless_dofs = IndexSet(dof_handler.n_dofs());
 
     // K couples the two displacement components, M does not: M gets its
     // own pattern, half as many entries (its products dominate the
@@ -104,6 +107,83 @@ namespace DiskImpact
     make_matrix(same_component, mass);
     if (with_tangent)
       make_matrix(all_components, tangent);
+  }
+
+  void
+  ElasticityOperator::set_massless_edge_zone(const Point<2> &point,
+                                             const double    radius)
+  {
+    std::vector<types::global_dof_index> face_dofs(fe->n_dofs_per_face());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (!cell->is_artificial())
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              cell->face(f)->boundary_id() == BoundaryIds::curved &&
+              cell->face(f)->center().distance(point) < radius)
+            {
+              cell->face(f)->get_dof_indices(face_dofs);
+              for (const auto dof : face_dofs)
+                if (!constraints.is_constrained(dof))
+                  massless_dofs.add_index(dof);
+            }
+    massless_dofs.compress();
+  }
+
+  unsigned int
+  ElasticityOperator::n_massless_dofs() const
+  {
+    return Utilities::MPI::sum(static_cast<unsigned int>(
+                                 (massless_dofs & owned_dofs).n_elements()),
+                               dof_handler.get_communicator());
+  }
+
+  void
+  ElasticityOperator::redistribute_cell_mass(
+    const std::vector<types::global_dof_index> &dof_indices,
+    FullMatrix<double>                         &cell_mass) const
+  {
+    // source[i]: the cell DoF whose value DoF i takes in the mass form.
+    const unsigned int        n = dof_indices.size();
+    std::vector<unsigned int> source(n);
+    bool                      any_massless = false;
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        source[i] = i;
+        if (!massless_dofs.is_element(dof_indices[i]))
+          continue;
+        any_massless          = true;
+        const auto  component = fe->system_to_component_index(i).first;
+        const auto &point     = fe->unit_support_point(i);
+        double      best      = std::numeric_limits<double>::max();
+        for (unsigned int j = 0; j < n; ++j)
+          if (fe->system_to_component_index(j).first == component &&
+              !massless_dofs.is_element(dof_indices[j]) &&
+              point.distance(fe->unit_support_point(j)) < best)
+            {
+              best      = point.distance(fe->unit_support_point(j));
+              source[i] = j;
+            }
+        Assert(source[i] != i, ExcInternalError());
+      }
+    if (!any_massless)
+      return;
+    // (Pi^T M Pi)(k, l) = sum over a, b with source[a] = k, source[b] = l.
+    FullMatrix<double> redistributed(n, n);
+    for (unsigned int a = 0; a < n; ++a)
+      for (unsigned int b = 0; b < n; ++b)
+        redistributed(source[a], source[b]) += cell_mass(a, b);
+    cell_mass = redistributed;
+  }
+
+  double
+  ElasticityOperator::mass_product(const PETScWrappers::MPI::Vector &x,
+                                   const PETScWrappers::MPI::Vector &y) const
+  {
+    auto x0 = x, y0 = y, my = create_vector();
+    constraints.set_zero(x0);
+    constraints.set_zero(y0);
+    mass.vmult(my, y0);
+    return x0 * my;
   }
 
   void
@@ -153,6 +233,7 @@ namespace DiskImpact
                 }
             }
           cell->get_dof_indices(dof_indices);
+          redistribute_cell_mass(dof_indices, cell_mass);
           constraints.distribute_local_to_global(cell_mass, dof_indices, mass);
           constraints.distribute_local_to_global(cell_stiffness,
                                                  dof_indices,

@@ -13,6 +13,7 @@
 #include <deal.II/fe/mapping_q.h>
 
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/petsc_sparse_matrix.h>
 #include <deal.II/lac/petsc_vector.h>
 
@@ -54,9 +55,31 @@ namespace DiskImpact
           const DiskGeometry                                    &geometry,
           bool with_tangent = false);
 
+    /**
+     * Mass redistribution (Khenous, Laborde & Renard, Eur. J. Mech. A/Solids
+     * 27, 2008): the DoFs on the curved-edge faces within @p radius of
+     * @p point carry no inertia. In each cell the mass form is that of Pi u,
+     * where Pi gives each such DoF the value of the nearest cell DoF of the
+     * same component off that part of the edge. Pi keeps constants, so the
+     * total mass and the momentum of a uniform motion are those of the
+     * consistent mass matrix. Call between setup() and assemble().
+     */
+    void
+    set_massless_edge_zone(const dealii::Point<2> &point, double radius);
+    /// The number of DoFs without inertia (set_massless_edge_zone()).
+    unsigned int
+    n_massless_dofs() const;
+
     /// Assemble M (rho u.v) and K (eps(u) : C : eps(v)).
     void
     assemble(const Material &material);
+
+    /// x^T M y of the fields x, y (the condensed M, constrained entries of x
+    /// and y ignored): with y a uniform translation, the momentum of the
+    /// velocity field x along it.
+    double
+    mass_product(const dealii::PETScWrappers::MPI::Vector &x,
+                 const dealii::PETScWrappers::MPI::Vector &y) const;
 
     /**
      * Make constrained DoFs harmless for the eigenproblem: they are decoupled
@@ -120,6 +143,14 @@ namespace DiskImpact
     dealii::IndexSet                     owned_dofs;
     dealii::IndexSet                     relevant_dofs;
     dealii::AffineConstraints<double>    constraints;
+    /// DoFs without inertia (mass redistribution), size n_dofs.
+    dealii::IndexSet massless_dofs;
+
+    /// The cell mass matrix of Pi u (set_massless_edge_zone()).
+    void
+    redistribute_cell_mass(
+      const std::vector<dealii::types::global_dof_index> &dof_indices,
+      dealii::FullMatrix<double>                         &cell_mass) const;
 
     dealii::PETScWrappers::MPI::SparseMatrix mass;
     dealii::PETScWrappers::MPI::SparseMatrix stiffness;

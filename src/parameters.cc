@@ -23,6 +23,7 @@ namespace DiskImpact
     QuasistaticContact::declare_parameters(prm);
     TimeIntegrator::declare_parameters(prm);
     Impact::declare_parameters(prm);
+    ImpactConvergenceStudy::declare_parameters(prm);
   }
 
   void
@@ -38,6 +39,7 @@ namespace DiskImpact
     quasistatic_contact.parse_parameters(prm);
     time_integrator.parse_parameters(prm);
     impact.parse_parameters(prm);
+    impact_convergence.parse_parameters(prm);
 
     // Checks across subsections.
     if (run.task == Task::quasistatic_contact)
@@ -48,7 +50,8 @@ namespace DiskImpact
                 "not)");
         contact.check_wall(geometry, 0.);
       }
-    if (run.task == Task::impact || run.task == Task::sweep)
+    if (run.task == Task::impact || run.task == Task::impact_convergence ||
+        run.task == Task::sweep)
       contact.check_wall(geometry, 0.05);
   }
 

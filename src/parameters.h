@@ -7,6 +7,7 @@
 #include "modal_solver.h"
 #include "run_parameters.h"
 #include "tasks/impact.h"
+#include "tasks/impact_convergence_study.h"
 #include "tasks/modal_convergence_study.h"
 #include "tasks/quasistatic_contact.h"
 #include "time_integrator.h"
@@ -38,6 +39,7 @@ namespace DiskImpact
     QuasistaticContact      quasistatic_contact;
     TimeIntegrator          time_integrator;
     Impact                  impact;
+    ImpactConvergenceStudy  impact_convergence;
   };
 
   /**

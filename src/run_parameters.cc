@@ -15,7 +15,8 @@ namespace DiskImpact
       "Task",
       "modal analysis",
       Patterns::Selection(
-        "modal analysis|modal convergence|quasistatic contact|impact|sweep"),
+        "modal analysis|modal convergence|quasistatic contact|impact|"
+        "impact convergence|sweep"),
       "What to compute. 'modal analysis': the lowest modes of "
       "the free disk compared with the analytic Bessel modes "
       "(modes.csv). 'modal convergence': the same on a "
@@ -23,7 +24,10 @@ namespace DiskImpact
       "(modal_convergence.csv). 'quasistatic contact': a half "
       "disk pressed on the wall by a body force, the contact "
       "law delta(P) (contact_law.csv). 'impact': the disk hits "
-      "the wall with speed v (impact.csv, summary.csv). 'sweep': "
+      "the wall with speed v (impact.csv, summary.csv). 'impact "
+      "convergence': that impact on ever finer meshes, time steps "
+      "and penalties, epsilon extrapolated with its error bar "
+      "(impact_convergence.csv, epsilon_estimate.csv). 'sweep': "
       "epsilon(v) for the velocities of subsection Impact "
       "(restitution.csv).");
     prm.declare_entry("Output directory",
@@ -41,6 +45,7 @@ namespace DiskImpact
       {"modal convergence", Task::modal_convergence},
       {"quasistatic contact", Task::quasistatic_contact},
       {"impact", Task::impact},
+      {"impact convergence", Task::impact_convergence},
       {"sweep", Task::sweep}};
     task             = tasks.at(prm.get("Task"));
     output_directory = prm.get("Output directory");

@@ -13,6 +13,7 @@ namespace DiskImpact
     modal_convergence,
     quasistatic_contact,
     impact,
+    impact_convergence,
     sweep
   };
 

@@ -10,13 +10,29 @@ namespace DiskImpact
   TimeIntegrator::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Time stepping");
-    prm.declare_entry("Scheme",
-                      "energy conserving",
-                      Patterns::Selection("energy conserving|newmark"),
-                      "'newmark': average acceleration with the trapezoidal "
-                      "contact force; 'energy conserving': the same with the "
-                      "contact force as the discrete gradient of the contact "
-                      "energy, which conserves the total energy exactly.");
+    prm.declare_entry(
+      "Scheme",
+      "energy conserving",
+      Patterns::Selection("energy conserving|newmark|generalized alpha"),
+      "'newmark': average acceleration (no numerical dissipation) with the "
+      "trapezoidal contact force; 'energy conserving': the same with the "
+      "contact force as the discrete gradient of the contact energy, which "
+      "conserves the total energy exactly; 'generalized alpha': "
+      "Chung-Hulbert with 'Spectral radius', damping the highest "
+      "frequencies.");
+    prm.declare_entry("Spectral radius",
+                      "0.8",
+                      Patterns::Double(0., 1.),
+                      "Scheme 'generalized alpha': the amplification factor "
+                      "rho_inf at infinite frequency, 0 <= rho_inf <= 1 "
+                      "(1: no numerical dissipation) [-].");
+    prm.declare_entry("Contact mass",
+                      "consistent",
+                      Patterns::Selection("consistent|redistributed"),
+                      "'redistributed': the DoFs of the edge that can touch "
+                      "the wall carry no inertia (mass redistribution), so "
+                      "the stiff penalty contact cannot make them chatter; "
+                      "'consistent': the plain mass matrix.");
     prm.declare_entry("Time step",
                       "0",
                       Patterns::Double(0.),
@@ -48,14 +64,18 @@ namespace DiskImpact
   TimeIntegrator::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Time stepping");
-    average            = prm.get("Scheme") == "newmark" ?
-                           ContactAverage::trapezoidal :
-                           ContactAverage::discrete_gradient;
-    fixed_time_step    = prm.get_double("Time step");
-    time_step_fraction = prm.get_double("Time step fraction");
-    tolerance          = prm.get_double("Newton tolerance");
-    max_iterations     = prm.get_integer("Maximum Newton iterations");
-    n_step_cuts        = prm.get_integer("Maximum step cuts");
+    const std::string scheme = prm.get("Scheme");
+    average                  = scheme == "energy conserving" ?
+                                 ContactAverage::discrete_gradient :
+                                 ContactAverage::trapezoidal;
+    set_spectral_radius(
+      scheme == "generalized alpha" ? prm.get_double("Spectral radius") : 1.);
+    mass_redistribution = prm.get("Contact mass") == "redistributed";
+    fixed_time_step     = prm.get_double("Time step");
+    time_step_fraction  = prm.get_double("Time step fraction");
+    tolerance           = prm.get_double("Newton tolerance");
+    max_iterations      = prm.get_integer("Maximum Newton iterations");
+    n_step_cuts         = prm.get_integer("Maximum step cuts");
     prm.leave_subsection();
   }
 
@@ -93,21 +113,54 @@ namespace DiskImpact
   TimeIntegrator
   TimeIntegrator::refined() const
   {
-    TimeIntegrator finer = *this;
-    finer.fixed_time_step *= 0.5;
-    finer.time_step_fraction *= 0.5;
-    return finer;
+    return with_time_step_scaled(0.5);
+  }
+
+  TimeIntegrator
+  TimeIntegrator::with_time_step_scaled(const double factor) const
+  {
+    TimeIntegrator scaled = *this;
+    scaled.fixed_time_step *= factor;
+    scaled.time_step_fraction *= factor;
+    return scaled;
+  }
+
+  void
+  TimeIntegrator::set_spectral_radius(const double rho)
+  {
+    alpha_m = (2. * rho - 1.) / (rho + 1.);
+    alpha_f = rho / (rho + 1.);
+    gamma   = 0.5 - alpha_m + alpha_f;
+    beta    = 0.25 * (1. - alpha_m + alpha_f) * (1. - alpha_m + alpha_f);
   }
 
   double
-  TimeIntegrator::mass_coefficient(const double dt)
+  TimeIntegrator::contact_new_weight() const
   {
-    return 2. / (dt * dt);
+    return 1. - alpha_f;
+  }
+
+  bool
+  TimeIntegrator::redistribute_mass() const
+  {
+    return mass_redistribution;
   }
 
   double
-  TimeIntegrator::stiffness_coefficient()
+  TimeIntegrator::mass_coefficient(const double dt) const
   {
-    return 0.5;
+    return (1. - alpha_m) / (beta * dt * dt);
+  }
+
+  double
+  TimeIntegrator::stiffness_coefficient() const
+  {
+    return 1. - alpha_f;
+  }
+
+  double
+  TimeIntegrator::old_stiffness_weight() const
+  {
+    return alpha_f;
   }
 } // namespace DiskImpact

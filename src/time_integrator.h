@@ -7,21 +7,27 @@
 namespace DiskImpact
 {
   /**
-   * Newmark's average-acceleration rule (beta = 1/4, gamma = 1/2), written
-   * as the implicit midpoint rule for M u'' + K u + f_c(u) = 0:
+   * The generalized-alpha method (Chung & Hulbert, J. Appl. Mech. 60, 1993)
+   * for M u'' + K u + f_c(u) = 0:
    *
-   *   M (v1 - v0) / dt = -K (u0 + u1) / 2 - f_bar,   (u1 - u0) / dt = (v0 + v1)
-   * / 2,
+   *   M a_{1-am} + K u_{1-af} + f_bar = 0,   x_{1-a} = (1 - a) x1 + a x0,
+   *   u1 = u0 + dt v0 + dt^2 ((1/2 - beta) a0 + beta a1),
+   *   v1 = v0 + dt ((1 - gamma) a0 + gamma a1),
    *
-   * i.e. for the end-of-step displacement
+   * with am = (2 rho - 1) / (rho + 1), af = rho / (rho + 1), gamma = 1/2 - am
+   * + af, beta = (1 - am + af)^2 / 4 from the spectral radius rho at
+   * infinite frequency. For the end-of-step displacement u1:
    *
-   *   (2/dt^2 M + K/2) u1 + f_bar = M (2/dt^2 u0 + 2/dt v0) - K u0 / 2.
+   *   (cm M + (1 - af) K) u1 + f_bar = M w - af K u0,
+   *   cm = (1 - am) / (beta dt^2),
+   *   w = cm (u0 + dt v0 + dt^2 (1/2 - beta) a0) - am a0.
    *
-   * f_bar is the contact force of the step: trapezoidal (plain Newmark) or
-   * the discrete gradient of the contact energy, with which kinetic + strain
-   * + contact energy is conserved exactly (docs/impact.md). The integrator
-   * knows nothing about finite elements: it gives the coefficients and
-   * updates vectors.
+   * rho = 1 is Newmark's average acceleration (the implicit midpoint rule,
+   * no numerical dissipation). f_bar is (1 - af) f_c(u1) + af f_c(u0), or,
+   * in the scheme 'energy conserving' (rho = 1), the discrete gradient of
+   * the contact energy, with which kinetic + strain + contact energy is
+   * conserved exactly (docs/impact.md). The integrator knows nothing about
+   * finite elements: it gives the coefficients and updates vectors.
    */
   class TimeIntegrator
   {
@@ -33,6 +39,12 @@ namespace DiskImpact
 
     ContactAverage
     contact_average() const;
+    /// The weight 1 - af of the end-of-step contact force in f_bar.
+    double
+    contact_new_weight() const;
+    /// Whether the contact DoFs carry no inertia (mass redistribution).
+    bool
+    redistribute_mass() const;
     /// The step: 'Time step' if positive, else 'Time step fraction' times
     /// @p contact_time_estimate.
     double
@@ -46,29 +58,38 @@ namespace DiskImpact
     /// The same scheme with half the time step.
     TimeIntegrator
     refined() const;
+    /// The same scheme with the time step scaled by @p factor.
+    TimeIntegrator
+    with_time_step_scaled(double factor) const;
 
-    /// A = mass_coefficient M + stiffness_coefficient K.
-    static double
-    mass_coefficient(double dt);
-    static double
-    stiffness_coefficient();
+    /// The effective matrix is mass_coefficient M + stiffness_coefficient K.
+    double
+    mass_coefficient(double dt) const;
+    double
+    stiffness_coefficient() const;
+    /// The weight af of K u0 on the right-hand side M w - af K u0.
+    double
+    old_stiffness_weight() const;
 
-    /// w = 2/dt^2 u0 + 2/dt v0; the right-hand side is M w - K u0 / 2.
+    /// w = cm (u0 + dt v0 + dt^2 (1/2 - beta) a0) - am a0.
     template <typename VectorType>
-    static void
+    void
     inertia_vector(const VectorType &u0,
                    const VectorType &v0,
+                   const VectorType &a0,
                    double            dt,
-                   VectorType       &w);
+                   VectorType       &w) const;
 
-    /// v1 = 2 (u1 - u0) / dt - v0.
+    /// a1 and v1 from the Newmark relations.
     template <typename VectorType>
-    static void
-    velocity_update(const VectorType &u0,
-                    const VectorType &u1,
-                    const VectorType &v0,
-                    double            dt,
-                    VectorType       &v1);
+    void
+    update(const VectorType &u0,
+           const VectorType &u1,
+           const VectorType &v0,
+           const VectorType &a0,
+           double            dt,
+           VectorType       &v1,
+           VectorType       &a1) const;
 
     /// u1 = u0 + dt v0: the predictor of Newton's iteration.
     template <typename VectorType>
@@ -79,38 +100,53 @@ namespace DiskImpact
               VectorType       &u1);
 
   private:
-    ContactAverage average            = ContactAverage::discrete_gradient;
-    double         fixed_time_step    = 0.;
-    double         time_step_fraction = 0.005;
-    double         tolerance          = 1e-11;
-    unsigned int   max_iterations     = 30;
-    unsigned int   n_step_cuts        = 4;
+    /// alpha_m, alpha_f, beta, gamma from the spectral radius.
+    void
+    set_spectral_radius(double rho);
+
+    ContactAverage average             = ContactAverage::discrete_gradient;
+    bool           mass_redistribution = false;
+    double         fixed_time_step     = 0.;
+    double         time_step_fraction  = 0.005;
+    double         tolerance           = 1e-11;
+    unsigned int   max_iterations      = 30;
+    unsigned int   n_step_cuts         = 4;
+    double         alpha_m             = 0.5;
+    double         alpha_f             = 0.5;
+    double         beta                = 0.25;
+    double         gamma               = 0.5;
   };
 
   template <typename VectorType>
   void
   TimeIntegrator::inertia_vector(const VectorType &u0,
                                  const VectorType &v0,
+                                 const VectorType &a0,
                                  const double      dt,
-                                 VectorType       &w)
+                                 VectorType       &w) const
   {
-    w = u0;
-    w *= 2. / (dt * dt);
-    w.add(2. / dt, v0);
+    const double cm = mass_coefficient(dt);
+    w               = u0;
+    w *= cm;
+    w.add(cm * dt, v0, cm * dt * dt * (0.5 - beta) - alpha_m, a0);
   }
 
   template <typename VectorType>
   void
-  TimeIntegrator::velocity_update(const VectorType &u0,
-                                  const VectorType &u1,
-                                  const VectorType &v0,
-                                  const double      dt,
-                                  VectorType       &v1)
+  TimeIntegrator::update(const VectorType &u0,
+                         const VectorType &u1,
+                         const VectorType &v0,
+                         const VectorType &a0,
+                         const double      dt,
+                         VectorType       &v1,
+                         VectorType       &a1) const
   {
-    v1 = u1;
-    v1.add(-1., u0);
-    v1 *= 2. / dt;
-    v1.add(-1., v0);
+    a1 = u1;
+    a1.add(-1., u0, -dt, v0);
+    a1.add(-dt * dt * (0.5 - beta), a0);
+    a1 *= 1. / (beta * dt * dt);
+    v1 = v0;
+    v1.add(dt * (1. - gamma), a0, dt * gamma, a1);
   }
 
   template <typename VectorType>

@@ -3,8 +3,10 @@
 #include "contact_operator.h"
 #include "csv_table.h"
 #include "elasticity_operator.h"
+#include "hdf5_output.h"
 #include "input_error.h"
 #include "low_rank_corrected_solver.h"
+#include "modal_projection.h"
 #include "parameters.h"
 #include "reference/log_contact_law.h"
 #include "reference/one_dof_impact.h"
@@ -71,6 +73,58 @@ namespace DiskImpact
                        "energy_dissipated",
                        "energy_total"});
     }
+
+    /// The locally owned entries of @p x of all ranks, in DoF order, on
+    /// rank 0 (empty elsewhere).
+    std::vector<double>
+    gather_on_root(const PETScWrappers::MPI::Vector &x, MPI_Comm communicator)
+    {
+      std::vector<double> local;
+      for (const auto i : x.locally_owned_elements())
+        local.push_back(x[i]);
+      std::vector<double> all;
+      for (const auto &part : Utilities::MPI::gather(communicator, local, 0))
+        all.insert(all.end(), part.begin(), part.end());
+      return all;
+    }
+
+    /// impact.h5: the summary, the time series, the mode energies (their
+    /// numeric columns; the families as an attribute) and the final state.
+    void
+    write_hdf5(const std::string         &filename,
+               const ImpactSummary       &summary,
+               const CsvTable            &series,
+               const CsvTable            &modes,
+               const std::vector<double> &displacement,
+               const std::vector<double> &velocity)
+    {
+      Hdf5Output file(filename);
+      file.write_table("summary", Impact::summary_table(summary));
+      file.write_table("time_series", series);
+      if (modes.n_rows() > 0)
+        {
+          std::vector<std::string>         names;
+          std::vector<std::vector<double>> columns;
+          for (const auto &name : modes.column_names())
+            if (name != "family")
+              {
+                names.push_back(name);
+                columns.push_back(modes.column(name));
+              }
+          file.write_table("mode_energies", names, columns);
+          std::string families;
+          for (const auto &family : modes.text_column("family"))
+            families += (families.empty() ? "" : ",") + family;
+          file.set_attribute("mode_energies", "family", families);
+        }
+      file.write_vector("final_state", "displacement", displacement);
+      file.write_vector("final_state", "velocity", velocity);
+      file.set_attribute("/",
+                         "units",
+                         "lengths R, times R/c, velocities c = sqrt(E2/rho), "
+                         "forces E2 R, energies E2 R^2 (per unit thickness)");
+      file.finish();
+    }
   } // namespace
 
   void
@@ -106,6 +160,13 @@ namespace DiskImpact
                       Patterns::Integer(0),
                       "Write the deformed state with stresses (impact.pvd) "
                       "every this many steps; 0: only the final state.");
+    prm.declare_entry("Mode energies",
+                      "20",
+                      Patterns::Integer(0, 400),
+                      "Task 'impact': project the vibration on this many "
+                      "lowest elastic eigenmodes of the same discretization "
+                      "(mode_energies.csv: after the impact and averaged over "
+                      "the collision, as seed 001's Table 1); 0: none.");
     prm.declare_entry("Velocities",
                       "0.005, 0.01, 0.02, 0.05, 0.1, 0.2, 0.3",
                       Patterns::List(Patterns::Double(), 0),
@@ -118,11 +179,11 @@ namespace DiskImpact
     prm.declare_entry("Error estimate",
                       "true",
                       Patterns::Bool(),
-                      "Task 'sweep': also run each point with one more global "
-                      "refinement, twice the elements across the contact, "
-                      "half the time step and four times the penalty factor; "
-                      "report that epsilon and |difference| as "
-                      "epsilon_error.");
+                      "Task 'sweep': run a convergence study (subsection "
+                      "Impact convergence) at each point and report its "
+                      "extrapolated epsilon and error bar (epsilon, "
+                      "epsilon_error); false: one run per point, no error "
+                      "bar.");
     prm.declare_entry("Margin",
                       "0.2",
                       Patterns::Double(0., 10.),
@@ -141,6 +202,7 @@ namespace DiskImpact
     contact_law_constant    = prm.get("Contact law constant");
     margin                  = prm.get_double("Margin");
     output_interval         = prm.get_integer("Output interval");
+    projected_modes         = prm.get_integer("Mode energies");
     sweep_velocities        = Utilities::string_to_double(
       Utilities::split_string_list(prm.get("Velocities"), ','));
     sweep_poisson_ratios = Utilities::string_to_double(
@@ -190,10 +252,11 @@ namespace DiskImpact
   }
 
   Impact
-  Impact::refined() const
+  Impact::with_mesh_refined(const unsigned int levels) const
   {
     Impact finer                  = *this;
-    finer.elements_across_contact = 2 * elements_across_contact;
+    finer.elements_across_contact = elements_across_contact << levels;
+    finer.grading                 = grading / (1u << levels);
     return finer;
   }
 
@@ -244,14 +307,29 @@ namespace DiskImpact
     parallel::distributed::Triangulation<2> triangulation(
       communicator, Triangulation<2>::limit_level_difference_at_vertices);
     geometry.create_triangulation(triangulation);
+    const double largest_half_width =
+      Reference::hertz_half_width(largest_load) * R;
     refine_toward_contact(triangulation,
                           geometry.contact_point(),
-                          Reference::hertz_half_width(largest_load) * R,
+                          largest_half_width,
                           elements_across_contact,
                           grading);
     ElasticityOperator op(parameters.finite_element.degree);
     op.setup(triangulation, geometry, true);
+    // No inertia on the edge within the uniformly refined contact zone.
+    if (integrator.redistribute_mass())
+      op.set_massless_edge_zone(geometry.contact_point(),
+                                1.5 * largest_half_width);
     op.assemble(material);
+    summary.massless_dofs = op.n_massless_dofs();
+    // The modes to project on, of the operator the time stepping uses.
+    std::unique_ptr<ModalProjection> projection;
+    if (write_time_series && projected_modes > 0)
+      projection = std::make_unique<ModalProjection>(
+        op,
+        geometry,
+        std::pow(material.transverse_wave_speed() / R, 2),
+        projected_modes);
     const ContactOperator contact(
       op,
       wall,
@@ -260,21 +338,19 @@ namespace DiskImpact
       geometry.center());
     const auto &constraints = op.get_constraints();
     summary.n_dofs          = op.get_dof_handler().n_dofs();
-    // The discrete disk's mass (whole disk), for the momentum balance.
-    const double discrete_mass =
-      factor * material.density() *
-      GridTools::volume(triangulation, op.get_mapping());
-
     // State: at rest relative to a uniform motion toward the wall.
-    auto u = op.create_vector(), v = op.create_vector();
+    auto u = op.create_vector(), v = op.create_vector(), a = op.create_vector(),
+         along_normal = op.create_vector();
     VectorTools::interpolate(op.get_mapping(),
                              op.get_dof_handler(),
                              Functions::ConstantFunction<2>(std::vector<double>{
-                               -v0 * wall.normal[0], -v0 * wall.normal[1]}),
-                             v);
-    constraints.distribute(v);
+                               wall.normal[0], wall.normal[1]}),
+                             along_normal);
+    constraints.distribute(along_normal);
+    v.add(-v0, along_normal);
     auto u_new = op.create_vector(), v_new = op.create_vector(),
-         w = op.create_vector(), b = op.create_vector(), r = op.create_vector(),
+         a_new = op.create_vector(), w = op.create_vector(),
+         b = op.create_vector(), r = op.create_vector(),
          du = op.create_vector(), tmp = op.create_vector();
 
     auto quadratic_form = [&](const PETScWrappers::MPI::SparseMatrix &matrix,
@@ -286,8 +362,13 @@ namespace DiskImpact
       matrix.vmult(tmp, w);
       return 0.5 * (w * tmp);
     };
-    auto mean_along_normal = [&](const PETScWrappers::MPI::Vector &x) {
-      return op.mean_displacement(op.create_ghosted(x)) * wall.normal;
+    // The centre of mass's motion along the wall normal: the momentum
+    // (M x) . n over the mass n . M n, which holds for a redistributed mass.
+    const double normal_mass = op.mass_product(along_normal, along_normal);
+    // The discrete disk's mass (whole disk), for the momentum balance.
+    const double discrete_mass     = factor * normal_mass;
+    auto         mean_along_normal = [&](const PETScWrappers::MPI::Vector &x) {
+      return op.mass_product(x, along_normal) / normal_mass;
     };
 
     const double energy_initial = factor * quadratic_form(op.mass_matrix(), v);
@@ -309,7 +390,7 @@ namespace DiskImpact
       for (const double value : {t * c / R,
                                  x_com,
                                  v_com / c,
-                                 factor * state.force / (E2 * R),
+                                 factor * state.force_average / (E2 * R),
                                  state.half_width() / R,
                                  kinetic,
                                  0.5 * mass * v_com * v_com,
@@ -320,7 +401,7 @@ namespace DiskImpact
         series.add(value);
       summary.delta_max = std::max(summary.delta_max, -x_com);
       summary.force_max =
-        std::max(summary.force_max, factor * state.force / (E2 * R));
+        std::max(summary.force_max, factor * state.force_average / (E2 * R));
     };
     record(0., ContactState());
 
@@ -340,13 +421,13 @@ namespace DiskImpact
     if (output_interval > 0)
       snapshot(0.);
 
-    // Effective matrix A = 2/dt^2 M + K/2, factorized once per step size.
+    // Effective matrix A = cm M + (1 - af) K, factorized once per step size.
     double dt = integrator.time_step(contact_time_estimate);
     std::unique_ptr<LowRankCorrectedSolver> solver;
     auto                                    factorize = [&]() {
       auto &A = op.tangent_reset_to_stiffness();
-      A *= TimeIntegrator::stiffness_coefficient();
-      A.add(TimeIntegrator::mass_coefficient(dt), op.mass_matrix());
+      A *= integrator.stiffness_coefficient();
+      A.add(integrator.mass_coefficient(dt), op.mass_matrix());
       solver = std::make_unique<LowRankCorrectedSolver>(A,
                                                         op.locally_owned_dofs(),
                                                         communicator);
@@ -360,10 +441,10 @@ namespace DiskImpact
     ContactState             state;
     auto                     attempt_step = [&]() {
       const double force_scale = 2. / dt * std::sqrt(2. * energy_initial);
-      TimeIntegrator::inertia_vector(u, v, dt, w);
+      integrator.inertia_vector(u, v, a, dt, w);
       op.mass_matrix().vmult(b, w);
       op.stiffness_matrix().vmult(tmp, u);
-      b.add(-0.5, tmp);
+      b.add(-integrator.old_stiffness_weight(), tmp);
       TimeIntegrator::predictor(u, v, dt, u_new);
       constraints.distribute(u_new);
       const auto ghosted_u = op.create_ghosted(u);
@@ -375,6 +456,7 @@ namespace DiskImpact
           state = contact.assemble_step(ghosted_u,
                                         op.create_ghosted(u_new),
                                         integrator.contact_average(),
+                                        integrator.contact_new_weight(),
                                         r,
                                         &terms);
           r.compress(VectorOperation::add);
@@ -421,20 +503,29 @@ namespace DiskImpact
             factorize();
             continue;
           }
-        TimeIntegrator::velocity_update(u, u_new, v, dt, v_new);
+        integrator.update(u, u_new, v, a, dt, v_new, a_new);
         constraints.distribute(v_new);
+        constraints.distribute(a_new);
         impulse += dt * factor * state.force_average;
         u = u_new;
         v = v_new;
+        a = a_new;
         t += dt;
         ++summary.steps;
         record(t, state);
+        if (projection && state.force_average > 0.)
+          projection->add_sample(u, v, dt);
         if (output_interval > 0 && summary.steps % output_interval == 0)
           snapshot(t);
 
         // The collision ends when the force returns to zero (seed 002);
         // the zero crossing is interpolated linearly.
-        if (state.force > 0.)
+        // The step's mean force (its impulse / dt), at the step's middle:
+        // the time discretization fixes this mean, not the end-of-step
+        // force, which can alternate from step to step (docs/impact.md).
+        const double mean_force = state.force_average;
+        const double mid_time   = t - 0.5 * dt;
+        if (mean_force > 0.)
           contact_end = -1.;
         else if (contact_end < 0. && previous_force > 0.)
           {
@@ -454,8 +545,8 @@ namespace DiskImpact
                                    " R/c");
         older_force    = previous_force;
         older_time     = previous_time;
-        previous_force = state.force;
-        previous_time  = t;
+        previous_force = mean_force;
+        previous_time  = mid_time;
       }
     summary.wall_time_loop =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
@@ -477,17 +568,35 @@ namespace DiskImpact
     summary.contact_dofs = solver->n_contact_dofs();
 
     snapshot(t);
-    if (write_time_series && root)
+    if (!write_time_series)
+      return summary;
+    const std::string &directory = parameters.run.output_directory;
+    CsvTable           modes({"rank"});
+    if (projection)
+      modes = projection->table(u, v, energy_initial, factor);
+    const auto final_u = gather_on_root(u, communicator),
+               final_v = gather_on_root(v, communicator);
+    if (root)
       {
-        series.write(parameters.run.output_directory + "/impact.csv");
-        std::ofstream pvd(parameters.run.output_directory + "/impact.pvd");
+        series.write(directory + "/impact.csv");
+        std::ofstream pvd(directory + "/impact.pvd");
         DataOutBase::write_pvd_record(pvd, snapshots);
+        if (projection)
+          modes.write(directory + "/mode_energies.csv");
+        write_hdf5(
+          directory + "/impact.h5", summary, series, modes, final_u, final_v);
       }
     return summary;
   }
 
   void
   Impact::write_summary(const ImpactSummary &s, const std::string &filename)
+  {
+    summary_table(s).write(filename);
+  }
+
+  CsvTable
+  Impact::summary_table(const ImpactSummary &s)
   {
     CsvTable table({"velocity",
                     "epsilon",
@@ -521,6 +630,6 @@ namespace DiskImpact
     table.add(s.triangular_solves);
     table.add(s.one_dof_contact_time);
     table.add(s.one_dof_delta_max);
-    table.write(filename);
+    return table;
   }
 } // namespace DiskImpact

@@ -9,6 +9,7 @@
 
 namespace DiskImpact
 {
+  class CsvTable;
   struct Parameters;
 
   /// What one impact gives (lengths in units of R, velocities of c).
@@ -30,6 +31,7 @@ namespace DiskImpact
     double       wall_time_loop    = 0.;     ///< time stepping only [s]
     double       triangular_solve_time = 0.; ///< mean time of one solve [s]
     unsigned int contact_dofs          = 0;  ///< DoFs of the low-rank part
+    unsigned int massless_dofs         = 0;  ///< DoFs without inertia
     double       one_dof_contact_time  = 0.; ///< 1-DOF log law [R / c]
     double       one_dof_delta_max     = 0.; ///< 1-DOF log law, / R
   };
@@ -62,9 +64,11 @@ namespace DiskImpact
     poisson_ratios() const;
     bool
     estimate_errors() const;
-    /// The same impact with twice the elements across the contact.
+    /// The same impact on a mesh with every element size halved @p levels
+    /// times near the contact: elements across it * 2^levels, grading /
+    /// 2^levels (global refinements are the geometry's).
     Impact
-    refined() const;
+    with_mesh_refined(unsigned int levels) const;
 
     ImpactSummary
     run(const Parameters &parameters,
@@ -74,6 +78,9 @@ namespace DiskImpact
     /// summary.csv with one row.
     static void
     write_summary(const ImpactSummary &summary, const std::string &filename);
+    /// The one-row summary table.
+    static CsvTable
+    summary_table(const ImpactSummary &summary);
 
   private:
     double              impact_velocity = 0.01;
@@ -85,5 +92,6 @@ namespace DiskImpact
     std::string         contact_law_constant    = "fit";
     double              margin                  = 0.2;
     unsigned int        output_interval         = 20;
+    unsigned int        projected_modes         = 20;
   };
 } // namespace DiskImpact

@@ -8,9 +8,11 @@ namespace DiskImpact
 
   /**
    * Task 'sweep': one impact per velocity (and Poisson ratio) of subsection
-   * Impact, each with an error estimate from a refined run (mesh, contact
-   * elements, time step and penalty), to restitution.csv, rewritten after
-   * every point.
+   * Impact, with 'Error estimate' each a convergence study
+   * (ImpactConvergenceStudy: epsilon extrapolated, with its error bar), to
+   * restitution.csv. The points are shared out among the MPI ranks, each
+   * running its own on one rank; the table is rewritten after every round
+   * of one point per rank.
    */
   void
   run_sweep(const Parameters &parameters, MPI_Comm communicator);

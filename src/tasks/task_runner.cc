@@ -1,6 +1,7 @@
 #include "tasks/task_runner.h"
 
 #include "parameters.h"
+#include "tasks/impact_convergence_study.h"
 #include "tasks/impact_task.h"
 #include "tasks/modal_analysis_task.h"
 #include "tasks/sweep_task.h"
@@ -66,6 +67,9 @@ namespace DiskImpact
           break;
         case Task::impact:
           run_impact(parameters, communicator);
+          break;
+        case Task::impact_convergence:
+          run_impact_convergence(parameters, communicator);
           break;
         case Task::sweep:
           run_sweep(parameters, communicator);

@@ -1,0 +1,92 @@
+#pragma once
+
+#include "richardson.h"
+#include "tasks/impact.h"
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <mpi.h>
+
+#include <string>
+#include <vector>
+
+namespace DiskImpact
+{
+  struct Parameters;
+  class CsvTable;
+
+  /// One run of a convergence study.
+  struct StudyRun
+  {
+    std::string   factor; ///< "mesh", "time step" or "penalty"
+    unsigned int  level = 0;
+    ImpactSummary summary;
+    double        wall_time = 0.; ///< whole run [s]
+  };
+
+  /// epsilon of one impact with its error bar, and how it was found.
+  struct ConvergedEpsilon
+  {
+    double                          epsilon = 0.; ///< extrapolated
+    double                          error   = 0.; ///< sum of the factors'
+    ImpactSummary                   base;         ///< the coarsest run
+    std::vector<StudyRun>           runs;
+    std::vector<std::string>        factors;
+    std::vector<RichardsonEstimate> estimates; ///< per factor
+  };
+
+  /**
+   * Convergence study of epsilon for one impact (subsection "Impact
+   * convergence"): from the base run of the parameter file, refine one
+   * discretization parameter at a time, each with a few levels:
+   *   mesh:      global refinements + l, elements across the contact * 2^l,
+   *              grading / 2^l (every element size halved; the penalty,
+   *              scaled with the smallest edge face, doubles) and dt / 2^l:
+   *              a finer mesh carries higher frequencies, which a fixed
+   *              step does not resolve (docs/impact.md); ratio 2, expected
+   *              order 2;
+   *   time step: dt / 2^l, ratio 2, expected order 2 (a diagnostic);
+   *   penalty:   penalty factor * 4^l, ratio 4 in 1/k, expected order 1.
+   * Each sequence is extrapolated (richardson_estimate()); assuming the
+   * errors of mesh (with dt) and penalty add, epsilon = base + sum of
+   * (limit - base) over these two, and its error bar is the sum of theirs.
+   */
+  class ImpactConvergenceStudy
+  {
+  public:
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    /// The study at the velocity of @p parameters; @p log (if not null)
+    /// receives one line per run.
+    ConvergedEpsilon
+    run(const Parameters &parameters,
+        MPI_Comm          communicator,
+        std::ostream     *log) const;
+
+    /// The runs as a table (factor, level, epsilon, ...).
+    static CsvTable
+    runs_table(const ConvergedEpsilon &result);
+    /// One row per factor (order, limit, error) and one for the total.
+    static CsvTable
+    estimates_table(const ConvergedEpsilon &result);
+
+  private:
+    /// @p parameters with @p factor refined @p level times.
+    static Parameters
+    refined(const Parameters  &parameters,
+            const std::string &factor,
+            unsigned int       level);
+
+    unsigned int mesh_levels      = 3;
+    unsigned int time_step_levels = 3;
+    unsigned int penalty_levels   = 3;
+  };
+
+  /// Task 'impact convergence': the study at 'Velocity', printed and
+  /// written to impact_convergence.csv and epsilon_estimate.csv.
+  void
+  run_impact_convergence(const Parameters &parameters, MPI_Comm communicator);
+} // namespace DiskImpact

@@ -1,0 +1,51 @@
+#include "richardson.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace DiskImpact;
+
+TEST_CASE("Richardson: second-order sequence", "[richardson]")
+{
+  // f(h) = 1 + 0.3 h^2 + 0.1 h^3 at h = 1, 1/2, 1/4: order near 2, limit
+  // within the GCI of the finest value.
+  std::vector<double> values;
+  for (const double h : {1., 0.5, 0.25})
+    values.push_back(1. + 0.3 * h * h + 0.1 * h * h * h);
+  const auto e = richardson_estimate(values, 2., 2.);
+  REQUIRE(e.clean);
+  CHECK(e.order == Approx(2.2).margin(0.2));
+  CHECK(std::abs(e.extrapolated - 1.) < 0.2 * std::abs(values[2] - 1.));
+  CHECK(std::abs(values[2] - 1.) <= e.error);
+}
+
+TEST_CASE("Richardson: first order in 1/k with ratio 4", "[richardson]")
+{
+  const std::vector<double> values{2. + 0.5, 2. + 0.5 / 4, 2. + 0.5 / 16};
+  const auto                e = richardson_estimate(values, 4., 1.);
+  REQUIRE(e.clean);
+  CHECK(e.order == Approx(1.).epsilon(1e-12));
+  CHECK(e.extrapolated == Approx(2.).epsilon(1e-12));
+}
+
+TEST_CASE("Richardson: oscillating sequence is not extrapolated",
+          "[richardson]")
+{
+  const std::vector<double> values{1.0, 1.2, 1.1};
+  const auto                e = richardson_estimate(values, 2., 2.);
+  CHECK_FALSE(e.clean);
+  CHECK(e.extrapolated == 1.1);
+  // 3 max(|d1|, |d2|) / (2^2 - 1)
+  CHECK(e.error == Approx(0.2).epsilon(1e-12));
+}
+
+TEST_CASE("Richardson: order far from the expected one is not trusted",
+          "[richardson]")
+{
+  // differences 1e-1, 1e-4: observed order ~10 against 2 expected
+  const std::vector<double> values{1.0, 1.1, 1.1001};
+  const auto                e = richardson_estimate(values, 2., 2.);
+  CHECK_FALSE(e.clean);
+  CHECK(e.error == Approx(0.1).epsilon(1e-9));
+}
