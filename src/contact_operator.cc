@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace DiskImpact
 {
@@ -31,6 +32,21 @@ namespace DiskImpact
       , origin(disk_center - wall.gap(disk_center) * wall.normal)
       , tangent_direction({-wall.normal[1], wall.normal[0]})
   {
+    // Each edge face's smallest undeformed gap, over its quadrature points.
+    const auto     &fe = op.get_dof_handler().get_fe();
+    FEFaceValues<2> face_values(op.get_mapping(),
+                                fe,
+                                QGauss<1>(fe.degree + 3),
+                                update_quadrature_points);
+    for_each_curved_edge_face(op.get_dof_handler(),
+                              [&](const auto &cell, const unsigned int f) {
+                                face_values.reinit(cell, f);
+                                double gap = std::numeric_limits<double>::max();
+                                for (const auto &x :
+                                     face_values.get_quadrature_points())
+                                  gap = std::min(gap, wall.gap(x));
+                                face_gap.push_back(gap);
+                              });
   }
 
   ContactState
@@ -139,10 +155,17 @@ namespace DiskImpact
     const FEValuesExtractors::Vector displacement(0);
     if (tangent_terms != nullptr)
       tangent_terms->clear();
+    // No point of a face whose undeformed gap exceeds the largest
+    // displacement can touch the wall: skip it.
+    const double reach = std::sqrt(2.) * std::max(ghosted_u_old.linfty_norm(),
+                                                  ghosted_u_new.linfty_norm());
+    unsigned int face_index = 0;
 
     ContactState state;
     for_each_curved_edge_face(
       dof_handler, [&](const auto &cell, const unsigned int f) {
+        if (face_gap[face_index++] > reach)
+          return;
         face_values.reinit(cell, f);
         face_values[displacement].get_function_values(ghosted_u_old, u_old);
         face_values[displacement].get_function_values(ghosted_u_new, u_new);

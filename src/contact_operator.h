@@ -109,5 +109,8 @@ namespace DiskImpact
     /// Where t = 0: the point of the wall nearest the disk's centre.
     dealii::Point<2>     origin;
     dealii::Tensor<1, 2> tangent_direction;
+    /// The smallest undeformed gap of each locally owned edge face, in the
+    /// order of for_each_curved_edge_face().
+    std::vector<double> face_gap;
   };
 } // namespace DiskImpact

@@ -179,11 +179,17 @@ namespace DiskImpact
   ElasticityOperator::mass_product(const PETScWrappers::MPI::Vector &x,
                                    const PETScWrappers::MPI::Vector &y) const
   {
-    auto x0 = x, y0 = y, my = create_vector();
-    constraints.set_zero(x0);
+    return mass_functional(y) * x;
+  }
+
+  PETScWrappers::MPI::Vector
+  ElasticityOperator::mass_functional(const PETScWrappers::MPI::Vector &y) const
+  {
+    auto y0 = y, my = create_vector();
     constraints.set_zero(y0);
     mass.vmult(my, y0);
-    return x0 * my;
+    constraints.set_zero(my);
+    return my;
   }
 
   void

@@ -80,6 +80,10 @@ namespace DiskImpact
     double
     mass_product(const dealii::PETScWrappers::MPI::Vector &x,
                  const dealii::PETScWrappers::MPI::Vector &y) const;
+    /// The vector m with m . x = mass_product(x, y) for every x: M y with
+    /// the constrained entries of y and of the result zeroed.
+    dealii::PETScWrappers::MPI::Vector
+    mass_functional(const dealii::PETScWrappers::MPI::Vector &y) const;
 
     /**
      * Make constrained DoFs harmless for the eigenproblem: they are decoupled

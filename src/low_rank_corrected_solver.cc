@@ -31,6 +31,8 @@ namespace DiskImpact
     check_petsc(PCSetType(pc, PCCHOLESKY), "PCSetType");
     check_petsc(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS),
                 "PCFactorSetMatSolverType");
+    // PETSc's options (e.g. -mat_mumps_icntl_7 for the ordering) apply.
+    check_petsc(KSPSetFromOptions(ksp), "KSPSetFromOptions");
     check_petsc(KSPSetUp(ksp), "KSPSetUp");
     ++factorizations;
   }

@@ -15,7 +15,6 @@ namespace DiskImpact
                                    const DiskGeometry &geometry,
                                    const double        eigenvalue_scale,
                                    const unsigned int  n_elastic_modes)
-      : op(op)
   {
     op.move_constrained_eigenvalues(1e10 * eigenvalue_scale);
     const unsigned int n_rigid = geometry.is_half_disk() ? 1 : 3;
@@ -34,6 +33,8 @@ namespace DiskImpact
            labels[first_elastic].label.family == Reference::ModeFamily::rigid)
       ++first_elastic;
     energy_time_integral.assign(basis.modes.size(), 0.);
+    for (const auto &mode : basis.modes)
+      mass_modes.push_back(op.mass_functional(mode));
   }
 
   std::vector<double>
@@ -43,8 +44,8 @@ namespace DiskImpact
     std::vector<double> energy(basis.modes.size(), 0.);
     for (unsigned int i = first_elastic; i < basis.modes.size(); ++i)
       {
-        const double q     = op.mass_product(basis.modes[i], u);
-        const double q_dot = op.mass_product(basis.modes[i], v);
+        const double q     = mass_modes[i] * u;
+        const double q_dot = mass_modes[i] * v;
         energy[i] = 0.5 * (q_dot * q_dot + basis.eigenvalues[i] * q * q);
       }
     return energy;

@@ -58,9 +58,10 @@ namespace DiskImpact
           double                                    factor) const;
 
   private:
-    const ElasticityOperator &op;
-    ModalBasis                basis;
-    std::vector<LabelledMode> labels;
+    ModalBasis basis;
+    /// M phi_i as functionals: q_i = mass_modes[i] . u.
+    std::vector<dealii::PETScWrappers::MPI::Vector> mass_modes;
+    std::vector<LabelledMode>                       labels;
     /// The first elastic mode (after the rigid ones).
     unsigned int        first_elastic = 0;
     std::vector<double> energy_time_integral;

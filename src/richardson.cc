@@ -29,9 +29,19 @@ namespace DiskImpact
     const double q = d1 / d2;
     if (!(q > 1.))
       return estimate;
+    // Monotone convergence: the last difference alone bounds the rest.
     const double order = std::log(q) / std::log(ratio);
-    if (order < 0.5 * expected_order || order > 2. * expected_order)
-      return estimate;
+    if (order > 2. * expected_order)
+      {
+        estimate.error =
+          3. * std::abs(d2) / (std::pow(ratio, expected_order) - 1.);
+        return estimate;
+      }
+    if (order < 0.5 * expected_order)
+      {
+        estimate.error = 3. * std::abs(d2) / (q - 1.);
+        return estimate;
+      }
     estimate.clean        = true;
     estimate.order        = order;
     estimate.extrapolated = values[n - 1] + d2 / (q - 1.);

@@ -18,15 +18,18 @@ namespace DiskImpact
    * J. Fluids Eng. 116, 1994) for results @p values of runs whose
    * parameter (h, dt or 1/k) shrinks by @p ratio from one to the next.
    *
-   * From the last three values: if the differences shrink monotonically
-   * (q = d1 / d2 > 1), the observed order is p = ln q / ln r and the limit
-   * f3 + d2 / (q - 1); the order counts as clean if it lies within a
-   * factor 2 of @p expected_order, and the error bar is the GCI,
-   * 1.25 |d2| / (q - 1). Otherwise (oscillating, growing or an order far from
-   * the expected one) there is no extrapolation: the limit is the last
-   * value and the error bar 3 max(|d1|, |d2|) / (r^p_expected - 1), with the
-   * GCI's safety factor for an unverified order. With two values only the
-   * latter applies (with d2).
+   * From the last three values, with differences d1, d2 and q = d1 / d2:
+   *  - q > 1 and the observed order p = ln q / ln r within a factor 2 of
+   *    @p expected_order: clean; the limit is f3 + d2 / (q - 1) and the
+   *    error bar the GCI, 1.25 |d2| / (q - 1);
+   *  - q > 1, p above twice the expected order: no extrapolation, error
+   *    3 |d2| / (r^p_expected - 1) (the GCI with its safety factor 3 for an
+   *    unverified order);
+   *  - q > 1, p below half the expected order: no extrapolation, error
+   *    3 |d2| / (q - 1) (the slow observed rate);
+   *  - q <= 1 (oscillating or growing): no extrapolation, error
+   *    3 max(|d1|, |d2|) / (r^p_expected - 1).
+   * With two values only: 3 |d2| / (r^p_expected - 1).
    */
   RichardsonEstimate
   richardson_estimate(const std::vector<double> &values,

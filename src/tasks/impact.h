@@ -70,6 +70,10 @@ namespace DiskImpact
     Impact
     with_mesh_refined(unsigned int levels) const;
 
+    /// C of the 1-DOF model's log law for the in-plane ratio @p nu2.
+    double
+    contact_law_constant_value(double nu2) const;
+
     ImpactSummary
     run(const Parameters &parameters,
         MPI_Comm          communicator,
@@ -83,6 +87,8 @@ namespace DiskImpact
     summary_table(const ImpactSummary &summary);
 
   private:
+    friend class ImpactSimulation;
+
     double              impact_velocity = 0.01;
     std::vector<double> sweep_velocities;
     std::vector<double> sweep_poisson_ratios;

@@ -28,7 +28,7 @@ namespace DiskImpact
   struct ConvergedEpsilon
   {
     double                          epsilon = 0.; ///< extrapolated
-    double                          error   = 0.; ///< sum of the factors'
+    double                          error   = 0.; ///< the mesh sequence's
     ImpactSummary                   base;         ///< the coarsest run
     std::vector<StudyRun>           runs;
     std::vector<std::string>        factors;
@@ -40,16 +40,16 @@ namespace DiskImpact
    * convergence"): from the base run of the parameter file, refine one
    * discretization parameter at a time, each with a few levels:
    *   mesh:      global refinements + l, elements across the contact * 2^l,
-   *              grading / 2^l (every element size halved; the penalty,
-   *              scaled with the smallest edge face, doubles) and dt / 2^l:
-   *              a finer mesh carries higher frequencies, which a fixed
-   *              step does not resolve (docs/impact.md); ratio 2, expected
-   *              order 2;
-   *   time step: dt / 2^l, ratio 2, expected order 2 (a diagnostic);
+   *              grading / 2^l (every element size halved; the penalty
+   *              k = kappa E2 / h doubles) and dt / 2^l: a finer mesh
+   *              carries higher frequencies, which a fixed step does not
+   *              resolve (docs/impact.md); ratio 2, expected order 1 (the
+   *              penalty's gap error, proportional to 1/k, i.e. to h);
+   *   time step: dt / 2^l, ratio 2, expected order 2;
    *   penalty:   penalty factor * 4^l, ratio 4 in 1/k, expected order 1.
-   * Each sequence is extrapolated (richardson_estimate()); assuming the
-   * errors of mesh (with dt) and penalty add, epsilon = base + sum of
-   * (limit - base) over these two, and its error bar is the sum of theirs.
+   * Each sequence is extrapolated (richardson_estimate()). The mesh
+   * sequence refines everything together: epsilon and its error bar are
+   * its limit and GCI; the other two are diagnostics.
    */
   class ImpactConvergenceStudy
   {
@@ -59,8 +59,9 @@ namespace DiskImpact
     void
     parse_parameters(dealii::ParameterHandler &prm);
 
-    /// The study at the velocity of @p parameters; @p log (if not null)
-    /// receives one line per run.
+    /// The study at the velocity of @p parameters, its runs shared out
+    /// among the ranks of @p communicator (each run on one rank); @p log
+    /// (if not null) receives one line per run of this rank as it ends.
     ConvergedEpsilon
     run(const Parameters &parameters,
         MPI_Comm          communicator,
@@ -74,6 +75,13 @@ namespace DiskImpact
     estimates_table(const ConvergedEpsilon &result);
 
   private:
+    /// Run @p points (described by @p runs) on the ranks of
+    /// @p communicator; every rank gets all results.
+    static std::vector<StudyRun>
+    run_all(const std::vector<StudyRun>   &runs,
+            const std::vector<Parameters> &points,
+            MPI_Comm                       communicator,
+            std::ostream                  *log);
     /// @p parameters with @p factor refined @p level times.
     static Parameters
     refined(const Parameters  &parameters,

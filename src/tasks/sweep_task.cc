@@ -1,15 +1,19 @@
 #include "tasks/sweep_task.h"
 
 #include "csv_table.h"
+#include "hdf5_output.h"
 #include "parameters.h"
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
+#include <chrono>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
+#include <map>
+#include <set>
 #include <sstream>
 
 namespace DiskImpact
@@ -32,10 +36,12 @@ namespace DiskImpact
                                                 "n_dofs",
                                                 "wall_time"};
 
+    using Row = std::vector<double>;
+
     /// One point of the sweep on this rank alone: the row of
     /// restitution.csv, epsilon and its error from the convergence study
     /// if 'Error estimate' is set.
-    std::vector<double>
+    Row
     run_point(const Parameters &parameters, const double nu, const double v)
     {
       Parameters point = parameters;
@@ -84,13 +90,102 @@ namespace DiskImpact
            << std::setw(8) << row[12] << " s\n";
       return line.str();
     }
+
+    /// The index of the next point to run, shared by all ranks: an integer
+    /// on rank 0, fetched and incremented atomically (MPI one-sided).
+    class NextPointCounter
+    {
+    public:
+      explicit NextPointCounter(MPI_Comm communicator)
+      {
+        const bool root = Utilities::MPI::this_mpi_process(communicator) == 0;
+        MPI_Win_allocate(root ? sizeof(int) : 0,
+                         sizeof(int),
+                         MPI_INFO_NULL,
+                         communicator,
+                         &value,
+                         &window);
+        if (root)
+          *value = 0;
+        MPI_Barrier(communicator);
+      }
+      ~NextPointCounter()
+      {
+        MPI_Win_free(&window);
+      }
+      int
+      next()
+      {
+        const int one = 1;
+        int       index;
+        MPI_Win_lock(MPI_LOCK_EXCLUSIVE, 0, 0, window);
+        MPI_Fetch_and_op(&one, &index, MPI_INT, 0, 0, MPI_SUM, window);
+        MPI_Win_unlock(0, window);
+        return index;
+      }
+
+    private:
+      int    *value = nullptr;
+      MPI_Win window;
+    };
+
+    /// Rows sent by the other ranks (tag = point index); @p wait: block
+    /// for at least one.
+    void
+    receive_rows(MPI_Comm            communicator,
+                 const bool          wait,
+                 std::map<int, Row> &rows)
+    {
+      int        arrived = wait ? 1 : 0;
+      MPI_Status status;
+      if (!wait)
+        MPI_Iprobe(
+          MPI_ANY_SOURCE, MPI_ANY_TAG, communicator, &arrived, &status);
+      while (arrived)
+        {
+          Row row(column_names.size());
+          MPI_Recv(row.data(),
+                   row.size(),
+                   MPI_DOUBLE,
+                   MPI_ANY_SOURCE,
+                   MPI_ANY_TAG,
+                   communicator,
+                   &status);
+          rows[status.MPI_TAG] = row;
+          MPI_Iprobe(
+            MPI_ANY_SOURCE, MPI_ANY_TAG, communicator, &arrived, &status);
+        }
+    }
+
+    /// restitution.csv and restitution.h5 (@p filename without suffix) with
+    /// the rows done so far, in the order of the points; print the rows not
+    /// in @p printed yet.
+    void
+    write_rows(const std::map<int, Row> &rows,
+               const std::string        &filename,
+               std::set<int>            &printed,
+               ConditionalOStream       &out)
+    {
+      CsvTable table(column_names);
+      for (const auto &[index, row] : rows)
+        {
+          table.start_row();
+          for (const double value : row)
+            table.add(value);
+          if (printed.insert(index).second)
+            out << describe(row) << std::flush;
+        }
+      table.write(filename + ".csv");
+      Hdf5Output h5(filename + ".h5");
+      h5.write_table("restitution", table);
+      h5.finish();
+    }
   } // namespace
 
   void
   run_sweep(const Parameters &parameters, MPI_Comm communicator)
   {
-    const unsigned int rank    = Utilities::MPI::this_mpi_process(communicator);
-    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(communicator);
+    const unsigned int rank = Utilities::MPI::this_mpi_process(communicator);
     ConditionalOStream pcout(std::cout, rank == 0);
 
     std::vector<std::pair<double, double>> points;
@@ -101,30 +196,34 @@ namespace DiskImpact
       for (const double v : parameters.impact.velocities())
         points.emplace_back(nu, v);
 
-    CsvTable table(column_names);
     pcout << "   v/c      nu    nu2       epsilon     error      contact "
              "time  energy err.   time\n";
-    // Rounds of one point per rank; after each, rank 0 gathers the rows
-    // and rewrites restitution.csv.
-    const std::size_t n_columns = column_names.size();
-    for (std::size_t first = 0; first < points.size(); first += n_ranks)
+    // Each rank takes the next point when it is free (a counter on rank 0,
+    // MPI one-sided), sends its row to rank 0, which rewrites
+    // restitution.csv whenever it has new rows.
+    NextPointCounter   counter(communicator);
+    std::map<int, Row> rows;
+    std::set<int>      printed;
+    const int          n_points = points.size();
+    const std::string  filename =
+      parameters.run.output_directory + "/restitution";
+    for (int i = counter.next(); i < n_points; i = counter.next())
       {
-        std::vector<double> row(n_columns, std::nan(""));
-        if (first + rank < points.size())
-          row = run_point(parameters,
-                          points[first + rank].first,
-                          points[first + rank].second);
-        const auto rows = Utilities::MPI::gather(communicator, row, 0);
-        if (rank != 0)
-          continue;
-        for (std::size_t r = 0; r < n_ranks && first + r < points.size(); ++r)
+        Row row = run_point(parameters, points[i].first, points[i].second);
+        if (rank == 0)
           {
-            table.start_row();
-            for (std::size_t c = 0; c < n_columns; ++c)
-              table.add(rows[r][c]);
-            pcout << describe(rows[r]) << std::flush;
+            rows[i] = row;
+            receive_rows(communicator, false, rows);
+            write_rows(rows, filename, printed, pcout);
           }
-        table.write(parameters.run.output_directory + "/restitution.csv");
+        else
+          MPI_Send(row.data(), row.size(), MPI_DOUBLE, 0, i, communicator);
       }
+    if (rank == 0)
+      while (static_cast<int>(rows.size()) < n_points)
+        {
+          receive_rows(communicator, true, rows);
+          write_rows(rows, filename, printed, pcout);
+        }
   }
 } // namespace DiskImpact

@@ -43,9 +43,17 @@ TEST_CASE("Richardson: oscillating sequence is not extrapolated",
 TEST_CASE("Richardson: order far from the expected one is not trusted",
           "[richardson]")
 {
-  // differences 1e-1, 1e-4: observed order ~10 against 2 expected
-  const std::vector<double> values{1.0, 1.1, 1.1001};
-  const auto                e = richardson_estimate(values, 2., 2.);
+  // differences 1e-1, 1e-4: observed order ~10 against 2 expected; the last
+  // difference with the expected order and safety factor 3
+  const std::vector<double> fast{1.0, 1.1, 1.1001};
+  const auto                e = richardson_estimate(fast, 2., 2.);
   CHECK_FALSE(e.clean);
-  CHECK(e.error == Approx(0.1).epsilon(1e-9));
+  CHECK(e.extrapolated == 1.1001);
+  CHECK(e.error == Approx(1e-4).epsilon(1e-9));
+  // differences 0.1, 0.09: observed order 0.15 against 2; the slow rate
+  // gives a large bar, 3 * 0.09 / (0.1 / 0.09 - 1) = 2.43
+  const std::vector<double> slow{1.0, 1.1, 1.19};
+  const auto                f = richardson_estimate(slow, 2., 2.);
+  CHECK_FALSE(f.clean);
+  CHECK(f.error == Approx(2.43).epsilon(1e-9));
 }

@@ -1,0 +1,453 @@
+#include "tasks/impact_simulation.h"
+
+#include "hdf5_output.h"
+#include "parameters.h"
+#include "reference/log_contact_law.h"
+#include "reference/one_dof_impact.h"
+#include "state_output.h"
+
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/base/function.h>
+#include <deal.II/base/utilities.h>
+
+#include <deal.II/numerics/vector_tools.h>
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <stdexcept>
+
+namespace DiskImpact
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /// The time series of one impact.
+    CsvTable
+    time_series_table()
+    {
+      return CsvTable({"time",
+                       "x_com",
+                       "v_com",
+                       "contact_force",
+                       "contact_half_width",
+                       "energy_kinetic",
+                       "energy_translational",
+                       "energy_strain",
+                       "energy_contact",
+                       "energy_dissipated",
+                       "energy_total"});
+    }
+
+    /// The locally owned entries of @p x of all ranks, in DoF order, on
+    /// rank 0 (empty elsewhere).
+    std::vector<double>
+    gather_on_root(const PETScWrappers::MPI::Vector &x, MPI_Comm communicator)
+    {
+      std::vector<double> local;
+      for (const auto i : x.locally_owned_elements())
+        local.push_back(x[i]);
+      std::vector<double> all;
+      for (const auto &part : Utilities::MPI::gather(communicator, local, 0))
+        all.insert(all.end(), part.begin(), part.end());
+      return all;
+    }
+
+    /// impact.h5: the summary, the time series, the mode energies (their
+    /// numeric columns; the families as an attribute) and the final state.
+    void
+    write_hdf5(const std::string         &filename,
+               const ImpactSummary       &summary,
+               const CsvTable            &series,
+               const CsvTable            &modes,
+               const std::vector<double> &displacement,
+               const std::vector<double> &velocity)
+    {
+      Hdf5Output file(filename);
+      file.write_table("summary", Impact::summary_table(summary));
+      file.write_table("time_series", series);
+      if (modes.n_rows() > 0)
+        {
+          std::vector<std::string>         names;
+          std::vector<std::vector<double>> columns;
+          for (const auto &name : modes.column_names())
+            if (name != "family")
+              {
+                names.push_back(name);
+                columns.push_back(modes.column(name));
+              }
+          file.write_table("mode_energies", names, columns);
+          std::string families;
+          for (const auto &family : modes.text_column("family"))
+            families += (families.empty() ? "" : ",") + family;
+          file.set_attribute("mode_energies", "family", families);
+        }
+      file.write_vector("final_state", "displacement", displacement);
+      file.write_vector("final_state", "velocity", velocity);
+      file.set_attribute("/",
+                         "units",
+                         "lengths R, times R/c, velocities c = sqrt(E2/rho), "
+                         "forces E2 R, energies E2 R^2 (per unit thickness)");
+      file.finish();
+    }
+  } // namespace
+
+  ImpactSimulation::ImpactSimulation(const Parameters &parameters,
+                                     const Impact     &impact,
+                                     MPI_Comm          communicator,
+                                     const bool        write_outputs)
+      : parameters(parameters)
+      , impact(impact)
+      , communicator(communicator)
+      , with_outputs(write_outputs)
+      , R(parameters.geometry.radius())
+      , E2(parameters.material.in_plane_young_modulus())
+      , c(parameters.material.velocity_unit())
+      , v0(impact.velocity() * c)
+      , mass(parameters.material.density() * M_PI * R * R)
+      , factor(parameters.geometry.is_half_disk() ? 2. : 1.)
+      , triangulation(communicator,
+                      Triangulation<2>::limit_level_difference_at_vertices)
+      , op(parameters.finite_element.degree)
+      , series(time_series_table())
+  {
+    summary.velocity = impact.velocity();
+  }
+
+  ImpactSummary
+  ImpactSimulation::run()
+  {
+    estimate_collision();
+    setup_operators();
+    set_initial_state();
+    record(0., ContactState());
+    if (impact.output_interval > 0)
+      snapshot();
+    dt = parameters.time_integrator.time_step(contact_time_estimate);
+    factorize();
+
+    const auto start = std::chrono::steady_clock::now();
+    do
+      {
+        advance();
+        record(t, state);
+        if (projection && state.force_average > 0.)
+          projection->add_sample(u, v, dt);
+        if (impact.output_interval > 0 &&
+            summary.steps % impact.output_interval == 0)
+          snapshot();
+      }
+    while (!collision_over());
+    summary.wall_time_loop =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+        .count();
+    finish();
+    snapshot();
+    if (with_outputs)
+      write_outputs();
+    return summary;
+  }
+
+  void
+  ImpactSimulation::estimate_collision()
+  {
+    const double C = impact.contact_law_constant_value(
+      parameters.material.in_plane_poisson_ratio());
+    try
+      {
+        const auto one_dof    = Reference::one_dof_impact(v0, mass, E2, R, C);
+        contact_time_estimate = one_dof.contact_time;
+        largest_load          = one_dof.max_force / (M_PI * E2 * R);
+        summary.one_dof_contact_time = one_dof.contact_time * c / R;
+        summary.one_dof_delta_max    = one_dof.max_compression / R;
+      }
+    catch (const std::domain_error &)
+      {
+        const double speed    = impact.velocity();
+        const double delta    = speed * R * std::sqrt(std::log(4. / speed));
+        contact_time_estimate = M_PI * delta / v0;
+        largest_load          = delta / (R * std::log(4. * R / delta));
+      }
+  }
+
+  void
+  ImpactSimulation::setup_operators()
+  {
+    const auto  &geometry = parameters.geometry;
+    const auto  &material = parameters.material;
+    const double largest_half_width =
+      Reference::hertz_half_width(largest_load) * R;
+    geometry.create_triangulation(triangulation);
+    refine_toward_contact(triangulation,
+                          geometry.contact_point(),
+                          largest_half_width,
+                          impact.elements_across_contact,
+                          impact.grading);
+    op.setup(triangulation, geometry, true);
+    // No inertia on the edge within the uniformly refined contact zone.
+    if (parameters.time_integrator.redistribute_mass())
+      op.set_massless_edge_zone(geometry.contact_point(),
+                                1.5 * largest_half_width);
+    op.assemble(material);
+    summary.massless_dofs = op.n_massless_dofs();
+    summary.n_dofs        = op.get_dof_handler().n_dofs();
+    // The modes to project on, of the operator the time stepping uses.
+    if (with_outputs && impact.projected_modes > 0)
+      projection = std::make_unique<ModalProjection>(
+        op,
+        geometry,
+        std::pow(material.transverse_wave_speed() / R, 2),
+        impact.projected_modes);
+    contact = std::make_unique<ContactOperator>(
+      op,
+      parameters.contact.wall(),
+      parameters.contact.penalty_law(E2,
+                                     ContactOperator::smallest_edge_face(op)),
+      geometry.center());
+  }
+
+  void
+  ImpactSimulation::set_initial_state()
+  {
+    for (auto *x :
+         {&u, &v, &a, &u_new, &v_new, &a_new, &along_normal, &b, &r, &du})
+      *x = op.create_vector();
+    work               = op.create_vector();
+    product            = op.create_vector();
+    const auto &normal = parameters.contact.wall().normal;
+    VectorTools::interpolate(op.get_mapping(),
+                             op.get_dof_handler(),
+                             Functions::ConstantFunction<2>(
+                               std::vector<double>{normal[0], normal[1]}),
+                             along_normal);
+    op.get_constraints().distribute(along_normal);
+    v.add(-v0, along_normal);
+    // The centre of mass's motion along the wall normal is the momentum
+    // (M x) . n over the mass n . M n (valid for a redistributed mass too).
+    normal_momentum = op.mass_functional(along_normal);
+    normal_mass     = normal_momentum * along_normal;
+    energy_initial  = factor * quadratic_form(op.mass_matrix(), v);
+    v_com_initial   = mean_along_normal(v);
+  }
+
+  double
+  ImpactSimulation::quadratic_form(
+    const PETScWrappers::MPI::SparseMatrix &matrix,
+    const PETScWrappers::MPI::Vector       &x) const
+  {
+    // On the condensed matrices, x with its constrained entries zeroed
+    // gives the form of the unconstrained field.
+    work = x;
+    op.get_constraints().set_zero(work);
+    matrix.vmult(product, work);
+    return 0.5 * (work * product);
+  }
+
+  double
+  ImpactSimulation::mean_along_normal(const PETScWrappers::MPI::Vector &x) const
+  {
+    return (normal_momentum * x) / normal_mass;
+  }
+
+  void
+  ImpactSimulation::factorize()
+  {
+    if (solver)
+      {
+        factorizations_before += solver->n_factorizations();
+        solves_before += solver->n_triangular_solves();
+        solve_time_before += solver->triangular_solve_time();
+      }
+    const auto &integrator = parameters.time_integrator;
+    auto       &A          = op.tangent_reset_to_stiffness();
+    A *= integrator.stiffness_coefficient();
+    A.add(integrator.mass_coefficient(dt), op.mass_matrix());
+    solver = std::make_unique<LowRankCorrectedSolver>(A,
+                                                      op.locally_owned_dofs(),
+                                                      communicator);
+  }
+
+  bool
+  ImpactSimulation::attempt_step()
+  {
+    const auto  &integrator  = parameters.time_integrator;
+    const auto  &constraints = op.get_constraints();
+    const double force_scale = 2. / dt * std::sqrt(2. * energy_initial);
+    // Right-hand side M w - af K u0, predictor u0 + dt v0.
+    integrator.inertia_vector(u, v, a, dt, work);
+    op.mass_matrix().vmult(b, work);
+    op.stiffness_matrix().vmult(product, u);
+    b.add(-integrator.old_stiffness_weight(), product);
+    TimeIntegrator::predictor(u, v, dt, u_new);
+    constraints.distribute(u_new);
+    const auto ghosted_u = op.create_ghosted(u);
+    for (unsigned int it = 0; it <= integrator.max_newton_iterations(); ++it)
+      {
+        op.tangent_matrix().vmult(r, u_new);
+        r -= b;
+        state = contact->assemble_step(ghosted_u,
+                                       op.create_ghosted(u_new),
+                                       integrator.contact_average(),
+                                       integrator.contact_new_weight(),
+                                       r,
+                                       &terms);
+        r.compress(VectorOperation::add);
+        constraints.set_zero(r);
+        if (r.l2_norm() <= integrator.newton_tolerance() * force_scale)
+          {
+            summary.newton_iterations += it;
+            return true;
+          }
+        if (it == integrator.max_newton_iterations())
+          break;
+        r *= -1.;
+        solver->solve(terms, r, du);
+        constraints.distribute(du);
+        u_new += du;
+      }
+    return false;
+  }
+
+  void
+  ImpactSimulation::advance()
+  {
+    const auto &integrator = parameters.time_integrator;
+    while (!attempt_step())
+      {
+        if (++cuts > integrator.max_step_cuts())
+          throw std::runtime_error(
+            "impact: Newton's method did not converge at t = " +
+            Utilities::to_string(t * c / R) +
+            " R/c even with the time step halved " +
+            std::to_string(integrator.max_step_cuts()) +
+            " times; lower 'Time step fraction' or the 'Penalty factor'");
+        dt *= 0.5;
+        factorize();
+      }
+    integrator.update(u, u_new, v, a, dt, v_new, a_new);
+    op.get_constraints().distribute(v_new);
+    op.get_constraints().distribute(a_new);
+    impulse += dt * factor * state.force_average;
+    u = u_new;
+    v = v_new;
+    a = a_new;
+    t += dt;
+    ++summary.steps;
+  }
+
+  void
+  ImpactSimulation::record(const double time, const ContactState &step)
+  {
+    const double kinetic = factor * quadratic_form(op.mass_matrix(), v);
+    const double strain  = factor * quadratic_form(op.stiffness_matrix(), u);
+    const double v_com   = mean_along_normal(v);
+    const double x_com   = mean_along_normal(u) / R;
+    const double total   = kinetic + strain + factor * step.energy;
+    // The step's mean force (its impulse / dt): the time discretization
+    // fixes this mean, not the end-of-step force (docs/impact.md).
+    const double force = factor * step.force_average / (E2 * R);
+    energy_error =
+      std::max(energy_error, std::abs(total - energy_initial) / energy_initial);
+    series.start_row();
+    for (const double value : {time * c / R,
+                               x_com,
+                               v_com / c,
+                               force,
+                               step.half_width() / R,
+                               kinetic,
+                               0.5 * mass * v_com * v_com,
+                               strain,
+                               factor * step.energy,
+                               0.,
+                               total})
+      series.add(value);
+    summary.delta_max = std::max(summary.delta_max, -x_com);
+    summary.force_max = std::max(summary.force_max, force);
+  }
+
+  bool
+  ImpactSimulation::collision_over()
+  {
+    // The collision ends when the step-mean force returns to zero (seed
+    // 002): the last two positive values, at mid-step, extrapolated to
+    // zero within the step in which the force vanished.
+    const double mean_force = state.force_average;
+    const double mid_time   = t - 0.5 * dt;
+    if (mean_force > 0.)
+      contact_end = -1.;
+    else if (contact_end < 0. && previous_force > 0.)
+      {
+        const double slope =
+          (previous_force - older_force) / (previous_time - older_time);
+        contact_end = slope < 0. ?
+                        std::min(t, previous_time - previous_force / slope) :
+                        previous_time;
+      }
+    if (contact_end >= 0. && t >= contact_end * (1. + impact.margin))
+      return true;
+    if (t > 20. * contact_time_estimate)
+      throw std::runtime_error(
+        "impact: the contact has not ended after " +
+        Utilities::to_string(20. * contact_time_estimate * c / R) + " R/c");
+    older_force    = previous_force;
+    older_time     = previous_time;
+    previous_force = mean_force;
+    previous_time  = mid_time;
+    return false;
+  }
+
+  void
+  ImpactSimulation::snapshot()
+  {
+    if (with_outputs)
+      snapshots.emplace_back(
+        t * c / R,
+        write_deformed_state(op,
+                             parameters.material,
+                             op.create_ghosted(u),
+                             parameters.run.output_directory,
+                             "impact",
+                             snapshots.size()));
+  }
+
+  void
+  ImpactSimulation::finish()
+  {
+    const double v_com_final = mean_along_normal(v);
+    const double disk_mass   = factor * normal_mass;
+    summary.epsilon          = -v_com_final / v_com_initial;
+    summary.contact_time     = contact_end * c / R;
+    summary.energy_error     = energy_error;
+    summary.impulse_error =
+      std::abs(disk_mass * (v_com_final - v_com_initial) - impulse) /
+      (disk_mass * v0);
+    summary.factorizations = factorizations_before + solver->n_factorizations();
+    summary.triangular_solves = solves_before + solver->n_triangular_solves();
+    summary.time_step         = dt * c / R;
+    summary.triangular_solve_time =
+      (solve_time_before + solver->triangular_solve_time()) /
+      summary.triangular_solves;
+    summary.contact_dofs = solver->n_contact_dofs();
+  }
+
+  void
+  ImpactSimulation::write_outputs() const
+  {
+    const std::string &directory = parameters.run.output_directory;
+    CsvTable           modes({"rank"});
+    if (projection)
+      modes = projection->table(u, v, energy_initial, factor);
+    const auto final_u = gather_on_root(u, communicator),
+               final_v = gather_on_root(v, communicator);
+    if (Utilities::MPI::this_mpi_process(communicator) != 0)
+      return;
+    series.write(directory + "/impact.csv");
+    std::ofstream pvd(directory + "/impact.pvd");
+    DataOutBase::write_pvd_record(pvd, snapshots);
+    if (projection)
+      modes.write(directory + "/mode_energies.csv");
+    write_hdf5(
+      directory + "/impact.h5", summary, series, modes, final_u, final_v);
+  }
+} // namespace DiskImpact

@@ -1,0 +1,123 @@
+#pragma once
+
+#include "contact_operator.h"
+#include "csv_table.h"
+#include "elasticity_operator.h"
+#include "low_rank_corrected_solver.h"
+#include "modal_projection.h"
+#include "tasks/impact.h"
+
+#include <deal.II/distributed/tria.h>
+
+#include <deal.II/lac/petsc_vector.h>
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace DiskImpact
+{
+  struct Parameters;
+
+  /**
+   * One impact (task 'impact', docs/impact.md): the 1-DOF estimate of the
+   * collision, the mesh graded toward the contact, the operators, time
+   * stepping with Newton's method and the low-rank corrected solver, the
+   * end of the collision (the step-mean contact force back at zero, seed
+   * 002) plus a margin, and the outputs. Built and run once.
+   */
+  class ImpactSimulation
+  {
+  public:
+    ImpactSimulation(const Parameters &parameters,
+                     const Impact     &impact,
+                     MPI_Comm          communicator,
+                     bool              write_outputs);
+
+    ImpactSummary
+    run();
+
+  private:
+    /// Contact time (for the step) and largest load (for the mesh) from the
+    /// 1-DOF log law; beyond its range, seed 001's eq. 61.
+    void
+    estimate_collision();
+    /// Mesh graded for the largest contact, operators, modes, penalty.
+    void
+    setup_operators();
+    /// Undeformed, moving uniformly toward the wall.
+    void
+    set_initial_state();
+    /// Factorize the effective matrix cm M + (1 - af) K for the step dt.
+    void
+    factorize();
+    /// Newton's method for the step from (u, v, a); false if it fails.
+    bool
+    attempt_step();
+    /// Take one step, halving it (and refactorizing) after a Newton failure.
+    void
+    advance();
+    /// Append the state after a step to the time series.
+    void
+    record(double time, const ContactState &state);
+    /// Whether the collision has ended and the margin after it passed.
+    bool
+    collision_over();
+    /// ParaView output of the current state.
+    void
+    snapshot();
+    /// Fill the summary's results after the last step.
+    void
+    finish();
+    void
+    write_outputs() const;
+
+    /// x^T M x / 2 or x^T K x / 2 (constrained entries ignored).
+    double
+    quadratic_form(const dealii::PETScWrappers::MPI::SparseMatrix &matrix,
+                   const dealii::PETScWrappers::MPI::Vector       &x) const;
+    /// The centre-of-mass component of x along the wall normal.
+    double
+    mean_along_normal(const dealii::PETScWrappers::MPI::Vector &x) const;
+
+    const Parameters &parameters;
+    const Impact     &impact;
+    MPI_Comm          communicator;
+    const bool        with_outputs;
+    /// R, E2, c, v_i, the disk's mass, 2 on a half disk.
+    double R, E2, c, v0, mass, factor;
+
+    ImpactSummary summary;
+    double        contact_time_estimate = 0., largest_load = 0.;
+
+    dealii::parallel::distributed::Triangulation<2> triangulation;
+    ElasticityOperator                              op;
+    std::unique_ptr<ContactOperator>                contact;
+    std::unique_ptr<ModalProjection>                projection;
+    std::unique_ptr<LowRankCorrectedSolver>         solver;
+
+    dealii::PETScWrappers::MPI::Vector u, v, a, u_new, v_new, a_new,
+      along_normal, normal_momentum, b, r, du;
+    mutable dealii::PETScWrappers::MPI::Vector work, product;
+    double                                     normal_mass    = 0.;
+    double                                     energy_initial = 0.;
+    double                                     v_com_initial  = 0.;
+
+    double                   dt = 0., t = 0.;
+    double                   impulse = 0., energy_error = 0.;
+    std::vector<RankOneTerm> terms;
+    ContactState             state;
+    unsigned int             cuts                  = 0;
+    unsigned int             factorizations_before = 0, solves_before = 0;
+    double                   solve_time_before = 0.;
+    /// The end of contact (-1: not yet) and the last two positive step-mean
+    /// forces with their mid-step times.
+    double contact_end    = -1.;
+    double previous_force = 0., previous_time = 0.;
+    double older_force = 0., older_time = -1.;
+
+    CsvTable                                    series;
+    std::vector<std::pair<double, std::string>> snapshots;
+  };
+} // namespace DiskImpact
