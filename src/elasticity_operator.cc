@@ -203,11 +203,19 @@ namespace DiskImpact
     const unsigned int dofs_per_cell = fe->n_dofs_per_cell();
     FullMatrix<double> cell_mass(dofs_per_cell, dofs_per_cell);
     FullMatrix<double> cell_stiffness(dofs_per_cell, dofs_per_cell);
+    FullMatrix<double> cell_damping(dofs_per_cell, dofs_per_cell);
     std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
     const FEValuesExtractors::Vector     displacement(0);
 
     const SymmetricTensor<4, 2> c   = material.stiffness_tensor();
+    const SymmetricTensor<4, 2> d   = material.damping_tensor();
     const double                rho = material.density();
+    with_damping                    = material.is_viscous();
+    if (with_damping)
+      {
+        damping.reinit(stiffness);
+        damping = 0.;
+      }
 
     std::vector<SymmetricTensor<2, 2>> eps(dofs_per_cell);
     std::vector<Tensor<1, 2>>          phi(dofs_per_cell);
@@ -220,6 +228,7 @@ namespace DiskImpact
           fe_values.reinit(cell);
           cell_mass      = 0.;
           cell_stiffness = 0.;
+          cell_damping   = 0.;
           for (const unsigned int q : fe_values.quadrature_point_indices())
             {
               for (unsigned int i = 0; i < dofs_per_cell; ++i)
@@ -231,10 +240,12 @@ namespace DiskImpact
               for (unsigned int i = 0; i < dofs_per_cell; ++i)
                 {
                   const SymmetricTensor<2, 2> c_eps_i = c * eps[i];
+                  const SymmetricTensor<2, 2> d_eps_i = d * eps[i];
                   for (unsigned int j = 0; j < dofs_per_cell; ++j)
                     {
                       cell_mass(i, j) += rho * (phi[i] * phi[j]) * dx;
                       cell_stiffness(i, j) += (c_eps_i * eps[j]) * dx;
+                      cell_damping(i, j) += (d_eps_i * eps[j]) * dx;
                     }
                 }
             }
@@ -244,9 +255,27 @@ namespace DiskImpact
           constraints.distribute_local_to_global(cell_stiffness,
                                                  dof_indices,
                                                  stiffness);
+          if (with_damping)
+            constraints.distribute_local_to_global(cell_damping,
+                                                   dof_indices,
+                                                   damping);
         }
     mass.compress(VectorOperation::add);
     stiffness.compress(VectorOperation::add);
+    if (with_damping)
+      damping.compress(VectorOperation::add);
+  }
+
+  bool
+  ElasticityOperator::has_damping() const
+  {
+    return with_damping;
+  }
+
+  const PETScWrappers::MPI::SparseMatrix &
+  ElasticityOperator::damping_matrix() const
+  {
+    return damping;
   }
 
   void

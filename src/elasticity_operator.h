@@ -70,9 +70,13 @@ namespace DiskImpact
     unsigned int
     n_massless_dofs() const;
 
-    /// Assemble M (rho u.v) and K (eps(u) : C : eps(v)).
+    /// Assemble M (rho u.v) and K (eps(u) : C : eps(v)), and for a viscous
+    /// material the damping matrix (eps(u) : D : eps(v), Kelvin-Voigt).
     void
     assemble(const Material &material);
+    /// Whether assemble() built a damping matrix.
+    bool
+    has_damping() const;
 
     /// x^T M y of the fields x, y (the condensed M, constrained entries of x
     /// and y ignored): with y a uniform translation, the momentum of the
@@ -130,6 +134,8 @@ namespace DiskImpact
     mass_matrix() const;
     const dealii::PETScWrappers::MPI::SparseMatrix &
     stiffness_matrix() const;
+    const dealii::PETScWrappers::MPI::SparseMatrix &
+    damping_matrix() const;
 
     /// A distributed vector without ghosts.
     dealii::PETScWrappers::MPI::Vector
@@ -159,5 +165,7 @@ namespace DiskImpact
     dealii::PETScWrappers::MPI::SparseMatrix mass;
     dealii::PETScWrappers::MPI::SparseMatrix stiffness;
     dealii::PETScWrappers::MPI::SparseMatrix tangent;
+    dealii::PETScWrappers::MPI::SparseMatrix damping;
+    bool                                     with_damping = false;
   };
 } // namespace DiskImpact

@@ -43,6 +43,18 @@ namespace DiskImpact
                         "Kelvin-Voigt relaxation time tau [time]: "
                         "sigma = C:eps + tau C:eps_dot. 0 is purely elastic; "
                         "must not be negative.");
+      prm.declare_entry("Shear viscosity",
+                        "0",
+                        Patterns::Double(),
+                        "In-plane shear viscosity eta_s [stress * time]: "
+                        "adds 2 eta_s dev(eps_dot) to the stress (dev the "
+                        "in-plane deviator). Must not be negative.");
+      prm.declare_entry("Bulk viscosity",
+                        "0",
+                        Patterns::Double(),
+                        "In-plane bulk viscosity eta_b [stress * time]: adds "
+                        "eta_b tr(eps_dot) 1 to the stress. Must not be "
+                        "negative.");
     }
     prm.leave_subsection();
   }
@@ -59,6 +71,8 @@ namespace DiskImpact
         prm.get_double("Poisson ratio"),
         prm.get_double("Density"),
         prm.get_double("Relaxation time"));
+    set_viscosities(prm.get_double("Shear viscosity"),
+                    prm.get_double("Bulk viscosity"));
     prm.leave_subsection();
   }
 
@@ -177,6 +191,35 @@ namespace DiskImpact
     return c;
   }
 
+  void
+  Material::set_viscosities(const double shear_viscosity,
+                            const double bulk_viscosity)
+  {
+    require(shear_viscosity >= 0. && bulk_viscosity >= 0.,
+            "Material: 'Shear viscosity' and 'Bulk viscosity' must not be "
+            "negative, got " +
+              std::to_string(shear_viscosity) + " and " +
+              std::to_string(bulk_viscosity));
+    shear_eta = shear_viscosity;
+    bulk_eta  = bulk_viscosity;
+  }
+
+  SymmetricTensor<4, 2>
+  Material::damping_tensor() const
+  {
+    const auto one_one =
+      outer_product(unit_symmetric_tensor<2>(), unit_symmetric_tensor<2>());
+    return relaxation_tau * stiffness_tensor() +
+           2. * shear_eta * (identity_tensor<2>() - 0.5 * one_one) +
+           bulk_eta * one_one;
+  }
+
+  bool
+  Material::is_viscous() const
+  {
+    return relaxation_tau > 0. || shear_eta > 0. || bulk_eta > 0.;
+  }
+
   double
   Material::longitudinal_wave_speed() const
   {
@@ -202,7 +245,8 @@ namespace DiskImpact
     s.precision(10);
     s << "Material: " << plane_model_name() << ", E = " << young
       << ", nu = " << poisson << ", rho = " << rho
-      << ", relaxation time = " << relaxation_tau << '\n'
+      << ", relaxation time = " << relaxation_tau << ", viscosities: shear "
+      << shear_eta << ", bulk " << bulk_eta << '\n'
       << "  in-plane constants: E2 = " << in_plane_young_modulus()
       << ", nu2 = " << in_plane_poisson_ratio() << ", mu = " << shear_modulus()
       << ", lambda2 = " << lame_lambda() << '\n'

@@ -71,6 +71,21 @@ namespace DiskImpact
     dealii::SymmetricTensor<4, 2>
     stiffness_tensor() const;
 
+    /// In-plane viscosities of the general Kelvin-Voigt law (checked >= 0).
+    void
+    set_viscosities(double shear_viscosity, double bulk_viscosity);
+    /**
+     * The viscous stress sigma_v = D : eps_dot of the Kelvin-Voigt law:
+     * D = tau C + 2 eta_s (I - 1 x 1 / 2) + eta_b 1 x 1, i.e. the relaxation
+     * time's part proportional to C and separate in-plane shear (deviatoric)
+     * and bulk viscosities.
+     */
+    dealii::SymmetricTensor<4, 2>
+    damping_tensor() const;
+    /// Whether D is not zero.
+    bool
+    is_viscous() const;
+
     /// Longitudinal and transverse wave speeds, and the seed's velocity unit
     /// c = sqrt(E2 / rho).
     double
@@ -90,5 +105,7 @@ namespace DiskImpact
     double     poisson        = 0.3;
     double     rho            = 1.;
     double     relaxation_tau = 0.;
+    double     shear_eta      = 0.;
+    double     bulk_eta       = 0.;
   };
 } // namespace DiskImpact

@@ -163,4 +163,10 @@ namespace DiskImpact
   {
     return alpha_f;
   }
+
+  double
+  TimeIntegrator::damping_coefficient(const double dt) const
+  {
+    return (1. - alpha_f) * gamma / (beta * dt);
+  }
 } // namespace DiskImpact

@@ -8,9 +8,10 @@ namespace DiskImpact
 {
   /**
    * The generalized-alpha method (Chung & Hulbert, J. Appl. Mech. 60, 1993)
-   * for M u'' + K u + f_c(u) = 0:
+   * for M u'' + D u' + K u + f_c(u) = 0 (D: Kelvin-Voigt damping):
    *
-   *   M a_{1-am} + K u_{1-af} + f_bar = 0,   x_{1-a} = (1 - a) x1 + a x0,
+   *   M a_{1-am} + D v_{1-af} + K u_{1-af} + f_bar = 0,
+   *   x_{1-a} = (1 - a) x1 + a x0,
    *   u1 = u0 + dt v0 + dt^2 ((1/2 - beta) a0 + beta a1),
    *   v1 = v0 + dt ((1 - gamma) a0 + gamma a1),
    *
@@ -18,9 +19,10 @@ namespace DiskImpact
    * + af, beta = (1 - am + af)^2 / 4 from the spectral radius rho at
    * infinite frequency. For the end-of-step displacement u1:
    *
-   *   (cm M + (1 - af) K) u1 + f_bar = M w - af K u0,
-   *   cm = (1 - am) / (beta dt^2),
-   *   w = cm (u0 + dt v0 + dt^2 (1/2 - beta) a0) - am a0.
+   *   (cm M + cd D + (1 - af) K) u1 + f_bar = M w - D z - af K u0,
+   *   cm = (1 - am) / (beta dt^2),   cd = (1 - af) gamma / (beta dt),
+   *   w = cm (u0 + dt v0 + dt^2 (1/2 - beta) a0) - am a0,
+   *   z = v_{1-af} - cd u1, a combination of u0, v0, a0.
    *
    * rho = 1 is Newmark's average acceleration (the implicit midpoint rule,
    * no numerical dissipation). f_bar is (1 - af) f_c(u1) + af f_c(u0), or,
@@ -67,9 +69,29 @@ namespace DiskImpact
     mass_coefficient(double dt) const;
     double
     stiffness_coefficient() const;
-    /// The weight af of K u0 on the right-hand side M w - af K u0.
+    /// The weight af of K u0 on the right-hand side M w - D z - af K u0.
     double
     old_stiffness_weight() const;
+    /// cd: the effective matrix's coefficient of D.
+    double
+    damping_coefficient(double dt) const;
+
+    /// z = v_{1-af} - cd u1 (independent of u1).
+    template <typename VectorType>
+    void
+    damping_vector(const VectorType &u0,
+                   const VectorType &v0,
+                   const VectorType &a0,
+                   double            dt,
+                   VectorType       &z) const;
+
+    /// v_{1-af} = (1 - af) v1 + af v0: the velocity the damping sees; the
+    /// step dissipates dt v_{1-af}^T D v_{1-af}.
+    template <typename VectorType>
+    void
+    damping_velocity(const VectorType &v0,
+                     const VectorType &v1,
+                     VectorType       &v_mid) const;
 
     /// w = cm (u0 + dt v0 + dt^2 (1/2 - beta) a0) - am a0.
     template <typename VectorType>
@@ -129,6 +151,35 @@ namespace DiskImpact
     w               = u0;
     w *= cm;
     w.add(cm * dt, v0, cm * dt * dt * (0.5 - beta) - alpha_m, a0);
+  }
+
+  template <typename VectorType>
+  void
+  TimeIntegrator::damping_vector(const VectorType &u0,
+                                 const VectorType &v0,
+                                 const VectorType &a0,
+                                 const double      dt,
+                                 VectorType       &z) const
+  {
+    // v1 = g/(b dt) (u1 - u0) + (1 - g/b) v0 + dt (1 - g/(2b)) a0
+    const double k = gamma / (beta * dt);
+    z              = u0;
+    z *= -(1. - alpha_f) * k;
+    z.add((1. - alpha_f) * (1. - gamma / beta) + alpha_f,
+          v0,
+          (1. - alpha_f) * dt * (1. - 0.5 * gamma / beta),
+          a0);
+  }
+
+  template <typename VectorType>
+  void
+  TimeIntegrator::damping_velocity(const VectorType &v0,
+                                   const VectorType &v1,
+                                   VectorType       &v_mid) const
+  {
+    v_mid = v1;
+    v_mid *= 1. - alpha_f;
+    v_mid.add(alpha_f, v0);
   }
 
   template <typename VectorType>

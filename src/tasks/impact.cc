@@ -207,7 +207,8 @@ namespace DiskImpact
                     "factorizations",
                     "triangular_solves",
                     "one_dof_contact_time",
-                    "one_dof_delta_max"});
+                    "one_dof_delta_max",
+                    "alpha"});
     table.start_row();
     for (const double value : {s.velocity,
                                s.epsilon,
@@ -225,6 +226,7 @@ namespace DiskImpact
     table.add(s.triangular_solves);
     table.add(s.one_dof_contact_time);
     table.add(s.one_dof_delta_max);
+    table.add(s.schwager_alpha);
     return table;
   }
 } // namespace DiskImpact

@@ -32,6 +32,7 @@ namespace DiskImpact
     double       triangular_solve_time = 0.; ///< mean time of one solve [s]
     unsigned int contact_dofs          = 0;  ///< DoFs of the low-rank part
     unsigned int massless_dofs         = 0;  ///< DoFs without inertia
+    double       schwager_alpha        = 0.; ///< tau sqrt(pi E2 / m)
     double       one_dof_contact_time  = 0.; ///< 1-DOF log law [R / c]
     double       one_dof_delta_max     = 0.; ///< 1-DOF log law, / R
   };

@@ -113,6 +113,9 @@ namespace DiskImpact
       , series(time_series_table())
   {
     summary.velocity = impact.velocity();
+    // Schwager's alpha = A sqrt(pi E2 / m) with A = tau (seed 000).
+    summary.schwager_alpha =
+      parameters.material.relaxation_time() * std::sqrt(M_PI * E2 / mass);
   }
 
   ImpactSummary
@@ -263,6 +266,8 @@ namespace DiskImpact
     auto       &A          = op.tangent_reset_to_stiffness();
     A *= integrator.stiffness_coefficient();
     A.add(integrator.mass_coefficient(dt), op.mass_matrix());
+    if (op.has_damping())
+      A.add(integrator.damping_coefficient(dt), op.damping_matrix());
     solver = std::make_unique<LowRankCorrectedSolver>(A,
                                                       op.locally_owned_dofs(),
                                                       communicator);
@@ -274,11 +279,17 @@ namespace DiskImpact
     const auto  &integrator  = parameters.time_integrator;
     const auto  &constraints = op.get_constraints();
     const double force_scale = 2. / dt * std::sqrt(2. * energy_initial);
-    // Right-hand side M w - af K u0, predictor u0 + dt v0.
+    // Right-hand side M w - D z - af K u0, predictor u0 + dt v0.
     integrator.inertia_vector(u, v, a, dt, work);
     op.mass_matrix().vmult(b, work);
     op.stiffness_matrix().vmult(product, u);
     b.add(-integrator.old_stiffness_weight(), product);
+    if (op.has_damping())
+      {
+        integrator.damping_vector(u, v, a, dt, work);
+        op.damping_matrix().vmult(product, work);
+        b.add(-1., product);
+      }
     TimeIntegrator::predictor(u, v, dt, u_new);
     constraints.distribute(u_new);
     const auto ghosted_u = op.create_ghosted(u);
@@ -329,6 +340,13 @@ namespace DiskImpact
     op.get_constraints().distribute(v_new);
     op.get_constraints().distribute(a_new);
     impulse += dt * factor * state.force_average;
+    if (op.has_damping())
+      {
+        // the step's viscous work, dt v^T D v at the damping's velocity
+        integrator.damping_velocity(v, v_new, work);
+        dissipated +=
+          2. * dt * factor * quadratic_form(op.damping_matrix(), work);
+      }
     u = u_new;
     v = v_new;
     a = a_new;
@@ -343,7 +361,7 @@ namespace DiskImpact
     const double strain  = factor * quadratic_form(op.stiffness_matrix(), u);
     const double v_com   = mean_along_normal(v);
     const double x_com   = mean_along_normal(u) / R;
-    const double total   = kinetic + strain + factor * step.energy;
+    const double total   = kinetic + strain + factor * step.energy + dissipated;
     // The step's mean force (its impulse / dt): the time discretization
     // fixes this mean, not the end-of-step force (docs/impact.md).
     const double force = factor * step.force_average / (E2 * R);
@@ -359,7 +377,7 @@ namespace DiskImpact
                                0.5 * mass * v_com * v_com,
                                strain,
                                factor * step.energy,
-                               0.,
+                               dissipated,
                                total})
       series.add(value);
     summary.delta_max = std::max(summary.delta_max, -x_com);

@@ -104,8 +104,10 @@ namespace DiskImpact
     double                                     energy_initial = 0.;
     double                                     v_com_initial  = 0.;
 
-    double                   dt = 0., t = 0.;
-    double                   impulse = 0., energy_error = 0.;
+    double dt = 0., t = 0.;
+    double impulse = 0., energy_error = 0.;
+    /// Energy dissipated by the viscosity so far (whole disk).
+    double                   dissipated = 0.;
     std::vector<RankOneTerm> terms;
     ContactState             state;
     unsigned int             cuts                  = 0;

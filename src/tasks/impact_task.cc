@@ -36,6 +36,8 @@ namespace DiskImpact
         << "  delta_max = " << s.delta_max
         << " R (1-DOF log law: " << s.one_dof_delta_max << ")\n"
         << "  force_max = " << s.force_max << " E2 R\n"
+        << "  Schwager's alpha = tau sqrt(pi E2 / m) = " << s.schwager_alpha
+        << "\n"
         << "  energy error = " << s.energy_error
         << ", impulse error = " << s.impulse_error << "\n"
         << "  time stepping: " << s.wall_time_loop << " s, "
