@@ -198,20 +198,35 @@ namespace DiskImpact
                });
   }
 
+  namespace
+  {
+    /// Attribute @p name = @p value of @p group in the file @p path.
+    template <typename T>
+    void
+    write_attribute(const std::string &path,
+                    const std::string &group,
+                    const bool         create_group,
+                    const std::string &name,
+                    const T           &value)
+    {
+      with_group(path,
+                 group,
+                 create_group,
+                 "writing attribute " + object_path(group, name) + " to " +
+                   path,
+                 [&](dealii::HDF5::Group &handle) {
+                   handle.set_attribute<T>(name, value);
+                 });
+    }
+  } // namespace
+
   void
   Hdf5Output::set_attribute(const std::string &group,
                             const std::string &name,
                             const double       value)
   {
     claim(group, name);
-    with_group(temporary,
-               group,
-               is_new_group(group),
-               "writing attribute " + object_path(group, name) + " to " +
-                 temporary,
-               [&](dealii::HDF5::Group &handle) {
-                 handle.set_attribute(name, value);
-               });
+    write_attribute(temporary, group, is_new_group(group), name, value);
   }
 
   void
@@ -220,14 +235,7 @@ namespace DiskImpact
                             const std::string &value)
   {
     claim(group, name);
-    with_group(temporary,
-               group,
-               is_new_group(group),
-               "writing attribute " + object_path(group, name) + " to " +
-                 temporary,
-               [&](dealii::HDF5::Group &handle) {
-                 handle.set_attribute<std::string>(name, value);
-               });
+    write_attribute(temporary, group, is_new_group(group), name, value);
   }
 
   void
