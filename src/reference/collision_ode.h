@@ -1,0 +1,46 @@
+#pragma once
+
+#include <functional>
+
+namespace DiskImpact
+{
+  namespace Reference
+  {
+    /// An elastic force law F(xi) of the overlap xi, with its derivative.
+    struct ForceLaw
+    {
+      std::function<double(double)> force;
+      std::function<double(double)> derivative;
+    };
+
+    /// When a collision ends.
+    enum class EndCriterion
+    {
+      force,  ///< the total force returns to zero (seed 002: the correct one)
+      overlap ///< the overlap returns to zero (admits attractive forces)
+    };
+
+    /// The result of one collision.
+    struct Collision
+    {
+      double epsilon      = 0.; ///< -xi'(t_c) / v
+      double contact_time = 0.; ///< t_c
+      double max_overlap  = 0.;
+    };
+
+    /**
+     * The 1-DOF collision m xi'' + F(xi) + A xi' F'(xi) = 0 (seed 000, eq. 4
+     * with the dissipative force of the Kelvin-Voigt kind), from xi = 0,
+     * xi' = @p velocity > 0, integrated with Boost.Odeint's Dormand-Prince
+     * stepper with dense output (tolerance @p tolerance); the end of the
+     * collision is located in the dense output by bisection.
+     */
+    Collision
+    collide(double          mass,
+            double          velocity,
+            const ForceLaw &law,
+            double          dissipation,
+            EndCriterion    end,
+            double          tolerance = 1e-13);
+  } // namespace Reference
+} // namespace DiskImpact
