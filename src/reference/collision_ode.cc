@@ -1,5 +1,7 @@
 #include "reference/collision_ode.h"
 
+#include "reference/log_contact_law.h"
+
 #include <boost/numeric/odeint.hpp>
 
 #include <array>
@@ -10,6 +12,46 @@ namespace DiskImpact
 {
   namespace Reference
   {
+    ForceLaw
+    disk_force_law(const double in_plane_young_modulus,
+                   const double radius,
+                   const double constant)
+    {
+      const LogContactLaw law(constant);
+      const double        scale = M_PI * in_plane_young_modulus;
+      return {[=](const double xi) {
+                return xi > 0. ? scale * radius * law.load(xi / radius) : 0.;
+              },
+              [=](const double xi) {
+                if (!(xi > 0.))
+                  return 0.;
+                const double x = law.load(xi / radius);
+                return scale / (std::log(4. / x) + constant - 1.);
+              }};
+    }
+
+    namespace
+    {
+      /// The overlap where the velocity, positive at the start of the
+      /// stepper's last step and not at its end, vanishes (bisection in the
+      /// dense output).
+      template <typename Stepper>
+      double
+      turning_point(Stepper &stepper)
+      {
+        std::array<double, 2> y;
+        double a = stepper.previous_time(), b = stepper.current_time();
+        for (unsigned int it = 0; it < 200 && b - a > 1e-16 * b; ++it)
+          {
+            const double m = 0.5 * (a + b);
+            stepper.calc_state(m, y);
+            (y[1] > 0. ? a : b) = m;
+          }
+        stepper.calc_state(b, y);
+        return y[0];
+      }
+    } // namespace
+
     Collision
     collide(const double       mass,
             const double       velocity,
@@ -41,8 +83,9 @@ namespace DiskImpact
       for (unsigned int steps = 0; steps < 1000000; ++steps)
         {
           stepper.do_step(rhs);
-          const State &x        = stepper.current_state();
-          collision.max_overlap = std::max(collision.max_overlap, x[0]);
+          const State &x = stepper.current_state();
+          if (x[1] <= 0. && collision.max_overlap == 0.)
+            collision.max_overlap = turning_point(stepper);
           if (!(indicator(x) <= 0.) || x[1] > 0.)
             continue;
           // Bisect for the sign change in the last step's dense output.

@@ -13,6 +13,16 @@ namespace DiskImpact
       std::function<double(double)> derivative;
     };
 
+    /**
+     * The disk's log law as a force law: F(xi) = pi E2 R x(xi / R), x the
+     * load of LogContactLaw with the constant @p constant, and
+     * F'(xi) = pi E2 / (ln(4 / x) + C - 1); zero for xi <= 0.
+     */
+    ForceLaw
+    disk_force_law(double in_plane_young_modulus,
+                   double radius,
+                   double constant);
+
     /// When a collision ends.
     enum class EndCriterion
     {

@@ -208,7 +208,8 @@ namespace DiskImpact
                     "triangular_solves",
                     "one_dof_contact_time",
                     "one_dof_delta_max",
-                    "alpha"});
+                    "alpha",
+                    "one_dof_epsilon"});
     table.start_row();
     for (const double value : {s.velocity,
                                s.epsilon,
@@ -227,6 +228,7 @@ namespace DiskImpact
     table.add(s.one_dof_contact_time);
     table.add(s.one_dof_delta_max);
     table.add(s.schwager_alpha);
+    table.add(s.one_dof_epsilon);
     return table;
   }
 } // namespace DiskImpact

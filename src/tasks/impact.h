@@ -35,6 +35,7 @@ namespace DiskImpact
     double       schwager_alpha        = 0.; ///< tau sqrt(pi E2 / m)
     double       one_dof_contact_time  = 0.; ///< 1-DOF log law [R / c]
     double       one_dof_delta_max     = 0.; ///< 1-DOF log law, / R
+    double       one_dof_epsilon       = 1.; ///< 1-DOF log law with viscosity
   };
 
   /**

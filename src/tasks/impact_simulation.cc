@@ -2,6 +2,7 @@
 
 #include "hdf5_output.h"
 #include "parameters.h"
+#include "reference/collision_ode.h"
 #include "reference/log_contact_law.h"
 #include "reference/one_dof_impact.h"
 #include "state_output.h"
@@ -164,6 +165,23 @@ namespace DiskImpact
         largest_load          = one_dof.max_force / (M_PI * E2 * R);
         summary.one_dof_contact_time = one_dof.contact_time * c / R;
         summary.one_dof_delta_max    = one_dof.max_compression / R;
+        summary.one_dof_epsilon      = 1.;
+        // With Kelvin-Voigt viscosity: m xi'' + F + tau xi' F' = 0 (seed
+        // 000, eq. 4 with A = tau), ended when the force returns to zero.
+        const double tau = parameters.material.relaxation_time();
+        if (tau > 0.)
+          {
+            const auto viscous =
+              Reference::collide(mass,
+                                 v0,
+                                 Reference::disk_force_law(E2, R, C),
+                                 tau,
+                                 Reference::EndCriterion::force,
+                                 1e-12);
+            summary.one_dof_epsilon      = viscous.epsilon;
+            summary.one_dof_contact_time = viscous.contact_time * c / R;
+            summary.one_dof_delta_max    = viscous.max_overlap / R;
+          }
       }
     catch (const std::domain_error &)
       {

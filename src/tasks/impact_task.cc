@@ -30,7 +30,8 @@ namespace DiskImpact
         << " R/c, steps " << s.steps << ", Newton iterations "
         << s.newton_iterations << ", factorizations " << s.factorizations
         << ", triangular solves " << s.triangular_solves << "\n"
-        << "  epsilon = " << s.epsilon << "\n"
+        << "  epsilon = " << s.epsilon
+        << " (1-DOF log law: " << s.one_dof_epsilon << ")\n"
         << "  contact time = " << s.contact_time
         << " R/c (1-DOF log law: " << s.one_dof_contact_time << ")\n"
         << "  delta_max = " << s.delta_max
