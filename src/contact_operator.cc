@@ -156,9 +156,11 @@ namespace DiskImpact
     if (tangent_terms != nullptr)
       tangent_terms->clear();
     // No point of a face whose undeformed gap exceeds the largest
-    // displacement can touch the wall: skip it.
-    const double reach = std::sqrt(2.) * std::max(ghosted_u_old.linfty_norm(),
-                                                  ghosted_u_new.linfty_norm());
+    // displacement toward the wall can touch it: skip the face. |u . n| <=
+    // max(|u_x|, |u_y|) (|n_x| + |n_y|).
+    const double reach =
+      (std::abs(wall.normal[0]) + std::abs(wall.normal[1])) *
+      std::max(ghosted_u_old.linfty_norm(), ghosted_u_new.linfty_norm());
     unsigned int face_index = 0;
 
     ContactState state;

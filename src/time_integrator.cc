@@ -44,7 +44,7 @@ namespace DiskImpact
                       "Time step as a fraction of the estimated contact time "
                       "[-] (used when 'Time step' is 0).");
     prm.declare_entry("Newton tolerance",
-                      "1e-11",
+                      "1e-13",
                       Patterns::Double(1e-16, 1e-3),
                       "Newton stops when |residual| <= this times the "
                       "inertial force 2 |M v0| / dt [-].");

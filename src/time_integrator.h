@@ -130,7 +130,7 @@ namespace DiskImpact
     bool           mass_redistribution = false;
     double         fixed_time_step     = 0.;
     double         time_step_fraction  = 0.005;
-    double         tolerance           = 1e-11;
+    double         tolerance           = 1e-13;
     unsigned int   max_iterations      = 30;
     unsigned int   n_step_cuts         = 4;
     double         alpha_m             = 0.5;
