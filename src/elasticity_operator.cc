@@ -175,13 +175,6 @@ namespace DiskImpact
     cell_mass = redistributed;
   }
 
-  double
-  ElasticityOperator::mass_product(const PETScWrappers::MPI::Vector &x,
-                                   const PETScWrappers::MPI::Vector &y) const
-  {
-    return mass_functional(y) * x;
-  }
-
   PETScWrappers::MPI::Vector
   ElasticityOperator::mass_functional(const PETScWrappers::MPI::Vector &y) const
   {

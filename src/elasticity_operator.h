@@ -78,14 +78,10 @@ namespace DiskImpact
     bool
     has_damping() const;
 
-    /// x^T M y of the fields x, y (the condensed M, constrained entries of x
-    /// and y ignored): with y a uniform translation, the momentum of the
-    /// velocity field x along it.
-    double
-    mass_product(const dealii::PETScWrappers::MPI::Vector &x,
-                 const dealii::PETScWrappers::MPI::Vector &y) const;
-    /// The vector m with m . x = mass_product(x, y) for every x: M y with
-    /// the constrained entries of y and of the result zeroed.
+    /// The vector m with m . x = x^T M y for every field x (the condensed
+    /// M, constrained entries of x and y ignored): M y with the constrained
+    /// entries of y and of the result zeroed. With y a uniform translation,
+    /// m . v is the momentum of the velocity field v along it.
     dealii::PETScWrappers::MPI::Vector
     mass_functional(const dealii::PETScWrappers::MPI::Vector &y) const;
 

@@ -249,12 +249,6 @@ namespace DiskImpact
     finished = true;
   }
 
-  const std::string &
-  Hdf5Output::get_filename() const
-  {
-    return filename;
-  }
-
   void
   Hdf5Output::claim(const std::string &group, const std::string &name)
   {

@@ -80,9 +80,6 @@ namespace DiskImpact
     void
     finish();
 
-    /// The final file name (without ".tmp").
-    const std::string &
-    get_filename() const;
 
   private:
     /// Record @p name in @p group as written; throws if it cannot be.

@@ -111,12 +111,6 @@ namespace DiskImpact
   }
 
   TimeIntegrator
-  TimeIntegrator::refined() const
-  {
-    return with_time_step_scaled(0.5);
-  }
-
-  TimeIntegrator
   TimeIntegrator::with_time_step_scaled(const double factor) const
   {
     TimeIntegrator scaled = *this;

@@ -57,9 +57,6 @@ namespace DiskImpact
     max_newton_iterations() const;
     unsigned int
     max_step_cuts() const;
-    /// The same scheme with half the time step.
-    TimeIntegrator
-    refined() const;
     /// The same scheme with the time step scaled by @p factor.
     TimeIntegrator
     with_time_step_scaled(double factor) const;

@@ -152,15 +152,15 @@ namespace DiskImpact
                                    std::chrono::steady_clock::now() - start)
                                    .count();
           const std::array<double, n_fields> values{
-            s.epsilon,
-            s.contact_time,
-            s.delta_max,
-            s.force_max,
-            s.energy_error,
-            s.time_step,
-            static_cast<double>(s.n_dofs),
-            static_cast<double>(s.steps),
-            seconds};
+            {s.epsilon,
+             s.contact_time,
+             s.delta_max,
+             s.force_max,
+             s.energy_error,
+             s.time_step,
+             static_cast<double>(s.n_dofs),
+             static_cast<double>(s.steps),
+             seconds}};
           std::copy(values.begin(), values.end(), &fields[n_fields * i]);
           if (log != nullptr)
             *log << describe({runs[i].factor, runs[i].level, s, seconds})
