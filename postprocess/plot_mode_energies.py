@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Plot the energy in the leading elastic modes of an impact beside seed Table 1.
 
-Usage: plot_mode_energies.py OUTPUT_DIR [-o mode_energies.png] [--count 10] [--linear]
+Usage: plot_mode_energies.py OUTPUT_DIR|FILE.csv [-o mode_energies.png] [--count 10]
+                             [--linear] [--nu2 NU2] [--velocity V] [--alpha A]
 
 Reads OUTPUT_DIR/mode_energies.csv (columns rank, n, l, family, omega,
 energy_fraction, average_energy_fraction; fractions of the initial kinetic
@@ -12,6 +13,11 @@ energy after the collision) if the file has no average. Rows of family
 per mode (n,l) two bars (average during, and after, the collision) beside the
 values of Table 1 of Gerl & Zippelius (alpha = 500, v = 0.1c, nu = 0.33,
 1600 modes), and prints both side by side.
+
+A CSV file may be given instead of the directory, e.g.
+modal_expansion_modes.csv of task 'modal expansion impact' (one block of rows
+per poisson_ratio_2d, velocity, alpha): --nu2, --velocity and --alpha pick
+the block.
 """
 import argparse
 import csv
@@ -50,13 +56,17 @@ def to_float(text):
     return float(text) if text else None
 
 
-def read_modes(path):
-    """Return the labelled elastic modes as dicts, and whether averages exist."""
+def read_modes(path, where):
+    """Return the labelled elastic modes as dicts, and whether averages exist;
+    only rows whose columns match @p where (column -> value) if given."""
     with open(path, newline="") as f:
         reader = csv.DictReader(f)
         has_average = "average_energy_fraction" in (reader.fieldnames or [])
         modes = []
         for row in reader:
+            if any(column in row and abs(float(row[column]) - value) > 1e-9
+                   for column, value in where.items()):
+                continue
             family = row["family"].strip()
             if family == "rigid" or not row["n"].strip() or not row["l"].strip():
                 continue
@@ -148,15 +158,25 @@ def plot(leading, seed, output, linear, title):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("directory", help="output directory holding mode_energies.csv")
+    parser.add_argument("directory",
+                        help="output directory holding mode_energies.csv, or a CSV file")
+    parser.add_argument("--nu2", type=float)
+    parser.add_argument("--velocity", type=float)
+    parser.add_argument("--alpha", type=float)
     parser.add_argument("-o", "--output",
                         help="output PNG (default: mode_energies.png in the directory)")
     parser.add_argument("--count", type=int, default=10, help="number of modes (default 10)")
     parser.add_argument("--linear", action="store_true", help="linear instead of log energy axis")
     args = parser.parse_args()
-    output = args.output or os.path.join(args.directory, "mode_energies.png")
-
-    modes, has_average = read_modes(os.path.join(args.directory, "mode_energies.csv"))
+    is_file = args.directory.endswith(".csv")
+    folder = os.path.dirname(args.directory) if is_file else args.directory
+    output = args.output or os.path.join(folder, "mode_energies.png")
+    where = {column: value for column, value in (("poisson_ratio_2d", args.nu2),
+                                                 ("velocity", args.velocity),
+                                                 ("alpha", args.alpha))
+             if value is not None}
+    source = args.directory if is_file else os.path.join(args.directory, "mode_energies.csv")
+    modes, has_average = read_modes(source, where)
     key = "average" if has_average else "after"
     leading = leading_modes(modes, key, args.count)
     ranked_by = "average during collision" if has_average else "energy after collision"

@@ -7,6 +7,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <cmath>
+#include <utility>
 
 namespace DiskImpact
 {
@@ -32,40 +33,71 @@ namespace DiskImpact
     return (x - point) * normal;
   }
 
-  double
-  PenaltyLaw::pressure(const double gap) const
+  namespace
   {
-    return gap < 0. ? -stiffness * gap : 0.;
+    /// p_c / E2 of the exponential law: below it the pressure is dropped.
+    constexpr double exponential_cut = 1e-16;
+
+    /// phi(x) = (1 - e^{-x}) / x and phi'(x), accurate near x = 0.
+    std::pair<double, double>
+    relative_secant(const double x)
+    {
+      if (std::abs(x) < 1e-3)
+        return {1. - x / 2. + x * x / 6. - x * x * x / 24.,
+                -0.5 + x / 3. - x * x / 8. + x * x * x / 30.};
+      const double e = std::exp(-x);
+      return {-std::expm1(-x) / x, ((1. + x) * e - 1.) / (x * x)};
+    }
+  } // namespace
+
+  double
+  WallLaw::pressure(const double gap) const
+  {
+    if (!(gap < 0.))
+      return 0.;
+    return kind == WallLawKind::penalty ? -stiffness * gap :
+                                          threshold * std::exp(-decay * gap);
   }
 
   double
-  PenaltyLaw::pressure_derivative(const double gap) const
+  WallLaw::pressure_derivative(const double gap) const
   {
-    return gap < 0. ? -stiffness : 0.;
+    if (!(gap < 0.))
+      return 0.;
+    return kind == WallLawKind::penalty ? -stiffness : -decay * pressure(gap);
   }
 
   double
-  PenaltyLaw::energy(const double gap) const
+  WallLaw::energy(const double gap) const
   {
-    return gap < 0. ? 0.5 * stiffness * gap * gap : 0.;
+    if (!(gap < 0.))
+      return 0.;
+    return kind == WallLawKind::penalty ?
+             0.5 * stiffness * gap * gap :
+             threshold / decay * std::expm1(-decay * gap);
   }
 
   double
-  PenaltyLaw::discrete_gradient_pressure(const double g0, const double g1) const
+  WallLaw::discrete_gradient_pressure(const double g0, const double g1) const
   {
     const double dg = g1 - g0;
-    // Below this the quotient loses digits; energy is quadratic, so the
-    // midpoint pressure is then exact to rounding.
+    // Both in the exponential's range: p(g0) phi(lambda dg) without
+    // cancellation.
+    if (kind == WallLawKind::exponential && g0 < 0. && g1 < 0.)
+      return pressure(g0) * relative_secant(decay * dg).first;
+    // Below this the quotient loses digits; the penalty energy is
+    // quadratic, so the midpoint pressure is then exact to rounding.
     if (std::abs(dg) <= 1e-10 * (std::abs(g0) + std::abs(g1)))
       return pressure(0.5 * (g0 + g1));
     return -(energy(g1) - energy(g0)) / dg;
   }
 
   double
-  PenaltyLaw::discrete_gradient_derivative(const double g0,
-                                           const double g1) const
+  WallLaw::discrete_gradient_derivative(const double g0, const double g1) const
   {
     const double dg = g1 - g0;
+    if (kind == WallLawKind::exponential && g0 < 0. && g1 < 0.)
+      return pressure(g0) * decay * relative_secant(decay * dg).second;
     if (std::abs(dg) <= 1e-10 * (std::abs(g0) + std::abs(g1)))
       return 0.5 * pressure_derivative(0.5 * (g0 + g1));
     // d/dg1 of -(E(g1) - E(g0)) / (g1 - g0), with E'(g) = -p(g)
@@ -84,6 +116,21 @@ namespace DiskImpact
                       "length^3], with h_contact the length of the smallest "
                       "edge face at the contact point. The penalty error "
                       "(penetration) is proportional to 1 / kappa.");
+    prm.declare_entry("Law",
+                      "penalty",
+                      Patterns::Selection("penalty|exponential"),
+                      "The wall's pressure p on an edge point with gap g: "
+                      "'penalty', p = k <-g>; 'exponential', the smooth wall "
+                      "potential of seed 001 (eq. 41), energy (E2 R / alpha) "
+                      "exp(alpha x / R) per unit edge length, x the distance "
+                      "of the point beyond the wall plane, cut where the "
+                      "pressure falls below 1e-16 E2 (the disk starts that "
+                      "far from the wall, 36.8 R / alpha).");
+    prm.declare_entry("Potential stiffness",
+                      "100",
+                      Patterns::Double(),
+                      "Law 'exponential': alpha > 0 of the potential [-] "
+                      "(hard contact as alpha -> infinity).");
     prm.declare_entry("Wall point",
                       "0, 0",
                       Patterns::List(Patterns::Double(), 2, 2),
@@ -103,6 +150,9 @@ namespace DiskImpact
   {
     prm.enter_subsection("Contact");
     kappa = prm.get_double("Penalty factor");
+    kind  = prm.get("Law") == "exponential" ? WallLawKind::exponential :
+                                              WallLawKind::penalty;
+    alpha = prm.get_double("Potential stiffness");
     rigid_wall.point =
       Point<2>(parse_vector(prm.get("Wall point"), "Wall point"));
     const Tensor<1, 2> normal =
@@ -112,6 +162,9 @@ namespace DiskImpact
     require(kappa > 0.,
             "Contact: 'Penalty factor' must be positive, got " +
               Utilities::to_string(kappa));
+    require(alpha > 0.,
+            "Contact: 'Potential stiffness' must be positive, got " +
+              Utilities::to_string(alpha));
     require(normal.norm() > 0., "Contact: 'Wall normal' must not be zero");
     rigid_wall.normal = normal / normal.norm();
   }
@@ -134,11 +187,45 @@ namespace DiskImpact
     return rigid_wall;
   }
 
-  PenaltyLaw
+  WallLaw
   ContactParameters::penalty_law(const double in_plane_young_modulus,
                                  const double h_contact) const
   {
-    return PenaltyLaw{kappa * in_plane_young_modulus / h_contact};
+    WallLaw law;
+    law.stiffness = kappa * in_plane_young_modulus / h_contact;
+    return law;
+  }
+
+  WallLawKind
+  ContactParameters::law_kind() const
+  {
+    return kind;
+  }
+
+  double
+  ContactParameters::potential_stiffness() const
+  {
+    return alpha;
+  }
+
+  WallLaw
+  ContactParameters::wall_law(const double in_plane_young_modulus,
+                              const double h_contact,
+                              const double radius) const
+  {
+    if (kind == WallLawKind::penalty)
+      return penalty_law(in_plane_young_modulus, h_contact);
+    WallLaw law;
+    law.kind      = WallLawKind::exponential;
+    law.decay     = alpha / radius;
+    law.threshold = exponential_cut * in_plane_young_modulus;
+    return law;
+  }
+
+  double
+  ContactParameters::exponential_law_offset(const double radius) const
+  {
+    return -std::log(exponential_cut) * radius / alpha;
   }
 
   void

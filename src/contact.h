@@ -22,18 +22,39 @@ namespace DiskImpact
     gap(const dealii::Point<2> &x) const;
   };
 
-  /**
-   * Penalty contact law: the wall pushes on the disk with the pressure
-   * p = k <-g> (<.> the positive part) along the wall normal; its energy per
-   * unit boundary length is k <-g>^2 / 2.
-   */
-  struct PenaltyLaw
+  /// The two wall laws.
+  enum class WallLawKind
   {
+    penalty,    ///< p = k <-g>
+    exponential ///< p = p_c exp(-lambda g) for g < 0 (seed 001, eq. 41)
+  };
+
+  /**
+   * The wall's pressure on the disk, along the wall normal, as a function of
+   * the gap g of an edge point (g < 0: the point is beyond the plane where
+   * the law starts to act), with its energy per unit boundary length:
+   * - penalty: p = k <-g> (<.> the positive part), energy k <-g>^2 / 2;
+   * - exponential: the smooth wall potential of seed 001 (eq. 41),
+   *   energy (E2 / lambda) exp(lambda x) per unit length with x the
+   *   distance of the point beyond the wall plane and lambda = alpha / R,
+   *   cut where its pressure E2 exp(lambda x) falls below p_c = 1e-16 E2:
+   *   the law's plane g = 0 lies a distance ln(E2 / p_c) / lambda in front
+   *   of the wall plane, p = p_c exp(-lambda g) and energy
+   *   (p_c / lambda)(exp(-lambda g) - 1) for g < 0, both zero for g >= 0
+   *   (the energy is continuous; the pressure jumps by p_c).
+   */
+  struct WallLaw
+  {
+    WallLawKind kind = WallLawKind::penalty;
+    /// Penalty: k [force / length^3].
     double stiffness = 0.;
+    /// Exponential: lambda = alpha / R [1 / length] and p_c [pressure].
+    double decay     = 0.;
+    double threshold = 0.;
 
     double
     pressure(double gap) const;
-    /// dp / dg: -k in penetration, 0 otherwise.
+    /// dp / dg: -k or -lambda p in penetration, 0 otherwise.
     double
     pressure_derivative(double gap) const;
     double
@@ -54,8 +75,10 @@ namespace DiskImpact
   };
 
   /**
-   * Subsection "Contact": the wall and the dimensionless penalty factor
-   * kappa of the penalty stiffness k = kappa E2 / h_contact.
+   * Subsection "Contact": the wall, the law ('Law') and its constant: the
+   * dimensionless penalty factor kappa of the penalty stiffness
+   * k = kappa E2 / h_contact, or the stiffness alpha of the exponential
+   * potential (seed 001, eq. 41).
    */
   class ContactParameters
   {
@@ -72,9 +95,26 @@ namespace DiskImpact
     const RigidWall &
     wall() const;
 
+    WallLawKind
+    law_kind() const;
+    /// alpha of the exponential potential [-].
+    double
+    potential_stiffness() const;
+
     /// The penalty law for in-plane modulus E2 and contact element size h.
-    PenaltyLaw
+    WallLaw
     penalty_law(double in_plane_young_modulus, double h_contact) const;
+
+    /// The chosen law ('Law') for E2, contact element size h and radius R.
+    WallLaw
+    wall_law(double in_plane_young_modulus,
+             double h_contact,
+             double radius) const;
+
+    /// Where the exponential law starts to act: the distance of its plane
+    /// g = 0 in front of the wall plane, ln(E2 / p_c) R / alpha.
+    double
+    exponential_law_offset(double radius) const;
 
     /**
      * Check that the wall touches the undeformed disk (within
@@ -86,7 +126,9 @@ namespace DiskImpact
     check_wall(const DiskGeometry &geometry, double max_gap) const;
 
   private:
-    double    kappa = 100.;
-    RigidWall rigid_wall;
+    double      kappa = 100.;
+    WallLawKind kind  = WallLawKind::penalty;
+    double      alpha = 100.;
+    RigidWall   rigid_wall;
   };
 } // namespace DiskImpact

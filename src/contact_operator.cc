@@ -24,7 +24,7 @@ namespace DiskImpact
 
   ContactOperator::ContactOperator(const ElasticityOperator &op,
                                    const RigidWall          &wall,
-                                   const PenaltyLaw         &law,
+                                   const WallLaw         &law,
                                    const Point<2>           &disk_center)
       : op(op)
       , wall(wall)

@@ -37,7 +37,7 @@ namespace DiskImpact
     double force = 0.;
     /// int p_bar ds: the force averaged over a time step (assemble_step).
     double force_average = 0.;
-    /// int k <-g>^2 / 2 ds.
+    /// int (the law's energy) ds.
     double energy = 0.;
     /// max(-g): the deepest penetration.
     double max_penetration = 0.;
@@ -52,7 +52,7 @@ namespace DiskImpact
   };
 
   /**
-   * The penalty contact of the disk's curved edge with a rigid wall, on the
+   * The contact (WallLaw) of the disk's curved edge with a rigid wall, on the
    * quadrature points of the edge faces: the residual contribution
    * -int p (n . v) ds and its consistent tangent int k H(-g) (n . u)(n . v) ds
    * (H the Heaviside function), for small strains (reference edge, current
@@ -63,7 +63,7 @@ namespace DiskImpact
   public:
     ContactOperator(const ElasticityOperator &op,
                     const RigidWall          &wall,
-                    const PenaltyLaw         &law,
+                    const WallLaw         &law,
                     const dealii::Point<2>   &disk_center);
 
     /**
@@ -105,7 +105,7 @@ namespace DiskImpact
   private:
     const ElasticityOperator &op;
     RigidWall                 wall;
-    PenaltyLaw                law;
+    WallLaw                law;
     /// Where t = 0: the point of the wall nearest the disk's centre.
     dealii::Point<2>     origin;
     dealii::Tensor<1, 2> tangent_direction;

@@ -1,7 +1,9 @@
 #pragma once
 
+#include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace DiskImpact
 {
@@ -22,5 +24,22 @@ namespace DiskImpact
   {
     if (!condition)
       throw InputError(message);
+  }
+
+  /// Throw an InputError unless @p valid holds for every entry of
+  /// @p values; the message is @p what followed by the first bad entry.
+  template <typename Predicate>
+  inline void
+  require_each(const std::vector<double> &values,
+               const Predicate           &valid,
+               const std::string         &what)
+  {
+    for (const double value : values)
+      if (!valid(value))
+        {
+          std::ostringstream message;
+          message << what << ", got " << value;
+          throw InputError(message.str());
+        }
   }
 } // namespace DiskImpact

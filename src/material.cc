@@ -124,6 +124,14 @@ namespace DiskImpact
     return other;
   }
 
+  Material
+  Material::with_relaxation_time(const double tau) const
+  {
+    Material other = *this;
+    other.set(model, young, poisson, rho, tau);
+    return other;
+  }
+
   PlaneModel
   Material::plane_model() const
   {

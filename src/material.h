@@ -46,6 +46,10 @@ namespace DiskImpact
     Material
     with_poisson_ratio(double nu) const;
 
+    /// The same material with another relaxation time (checked).
+    Material
+    with_relaxation_time(double tau) const;
+
     PlaneModel
     plane_model() const;
     std::string

@@ -24,6 +24,8 @@ namespace DiskImpact
     TimeIntegrator::declare_parameters(prm);
     Impact::declare_parameters(prm);
     ImpactConvergenceStudy::declare_parameters(prm);
+    ReferenceModels::declare_parameters(prm);
+    ModalExpansionStudy::declare_parameters(prm);
   }
 
   void
@@ -40,6 +42,8 @@ namespace DiskImpact
     time_integrator.parse_parameters(prm);
     impact.parse_parameters(prm);
     impact_convergence.parse_parameters(prm);
+    reference_models.parse_parameters(prm);
+    modal_expansion.parse_parameters(prm);
 
     // Checks across subsections.
     if (run.task == Task::quasistatic_contact)
@@ -49,6 +53,9 @@ namespace DiskImpact
                 "symmetry condition holds the rigid motions the wall does "
                 "not)");
         contact.check_wall(geometry, 0.);
+        require(contact.law_kind() == WallLawKind::penalty,
+                "Task 'quasistatic contact' needs 'Law = penalty' in "
+                "subsection Contact");
       }
     if (run.task == Task::impact || run.task == Task::impact_convergence ||
         run.task == Task::sweep)

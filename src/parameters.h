@@ -9,7 +9,9 @@
 #include "tasks/impact.h"
 #include "tasks/impact_convergence_study.h"
 #include "tasks/modal_convergence_study.h"
+#include "tasks/modal_expansion_task.h"
 #include "tasks/quasistatic_contact.h"
+#include "tasks/reference_models_task.h"
 #include "time_integrator.h"
 
 #include <deal.II/base/parameter_handler.h>
@@ -40,6 +42,8 @@ namespace DiskImpact
     TimeIntegrator          time_integrator;
     Impact                  impact;
     ImpactConvergenceStudy  impact_convergence;
+    ReferenceModels         reference_models;
+    ModalExpansionStudy     modal_expansion;
   };
 
   /**

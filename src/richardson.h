@@ -35,4 +35,24 @@ namespace DiskImpact
   richardson_estimate(const std::vector<double> &values,
                       double                     ratio,
                       double                     expected_order);
+
+  /// A straight-line least-squares fit y = limit + slope x, with what it
+  /// says about the extrapolation to x = 0.
+  struct LinearExtrapolation
+  {
+    double limit    = 0.; ///< y at x = 0
+    double slope    = 0.;
+    double residual = 0.; ///< largest |y_i - fit(x_i)|
+    /// max(3 |limit - limit without the point of largest x|, residual):
+    /// how far the limit moves if the coarsest point is dropped, with the
+    /// safety factor 3 of richardson_estimate()'s fallbacks, at least the
+    /// misfit; NaN for two points (a line through them says nothing).
+    double error = 0.;
+  };
+
+  /// Fit y = limit + slope x to (@p x, @p y) (at least two points).
+  LinearExtrapolation
+  extrapolate_linearly(const std::vector<double> &x,
+                       const std::vector<double> &y);
+
 } // namespace DiskImpact

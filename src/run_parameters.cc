@@ -16,7 +16,7 @@ namespace DiskImpact
       "modal analysis",
       Patterns::Selection(
         "modal analysis|modal convergence|quasistatic contact|impact|"
-        "impact convergence|sweep"),
+        "impact convergence|sweep|reference models|modal expansion impact"),
       "What to compute. 'modal analysis': the lowest modes of "
       "the free disk compared with the analytic Bessel modes "
       "(modes.csv). 'modal convergence': the same on a "
@@ -29,7 +29,12 @@ namespace DiskImpact
       "and penalties, epsilon extrapolated with its error bar "
       "(impact_convergence.csv, epsilon_estimate.csv). 'sweep': "
       "epsilon(v) for the velocities of subsection Impact "
-      "(restitution.csv).");
+      "(restitution.csv). 'reference models': epsilon of a reduced "
+      "collision model, no finite elements (subsection Reference models, "
+      "reference_<model>.csv). 'modal expansion impact': the impact "
+      "in the modal expansion of seed 001 with its smooth wall potential, "
+      "extrapolated to all modes and hard contact (subsection Modal "
+      "expansion, modal_expansion.csv, modal_extrapolation.csv).");
     prm.declare_entry("Output directory",
                       "output/modal",
                       Patterns::Anything(),
@@ -46,7 +51,9 @@ namespace DiskImpact
       {"quasistatic contact", Task::quasistatic_contact},
       {"impact", Task::impact},
       {"impact convergence", Task::impact_convergence},
-      {"sweep", Task::sweep}};
+      {"sweep", Task::sweep},
+      {"reference models", Task::reference_models},
+      {"modal expansion impact", Task::modal_expansion_impact}};
     task             = tasks.at(prm.get("Task"));
     output_directory = prm.get("Output directory");
     require(!output_directory.empty(), "'Output directory' must not be empty");

@@ -14,7 +14,9 @@ namespace DiskImpact
     quasistatic_contact,
     impact,
     impact_convergence,
-    sweep
+    sweep,
+    reference_models,
+    modal_expansion_impact
   };
 
   /**

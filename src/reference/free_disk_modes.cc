@@ -189,13 +189,22 @@ namespace DiskImpact
         {
           // Scan for sign changes with a step well below the spacing of
           // the zeros of J_n(kappa'), then bracket each root to machine
-          // precision.
-          const double step = 0.01 / wave_speed_ratio();
-          auto         f    = [&](const double k) {
+          // precision; continue where the last scan stopped. The mixed
+          // family of order n has no root below kappa' = n / 2 (its lowest
+          // mode runs along the edge faster than the Rayleigh speed,
+          // kappa' > n c_R / c_T), and there the determinant, a product of
+          // J_n ~ (kappa / 2)^n / n!, underflows to zero for large n: start
+          // the scan there.
+          const double step  = 0.01 / wave_speed_ratio();
+          const double start = family == ModeFamily::mixed ?
+                                 std::max(step, 0.5 * n / wave_speed_ratio()) :
+                                 step;
+          auto         f     = [&](const double k) {
             return frequency_equation(n, family, k);
           };
-          std::vector<double> roots;
-          double              k0 = step, f0 = f(k0);
+          std::vector<double> &roots = cached.second;
+          double               k0    = std::max(cached.first, start);
+          double               f0    = f(k0);
           while (k0 < kappa_max)
             {
               const double k1 = k0 + step, f1 = f(k1);
@@ -217,7 +226,7 @@ namespace DiskImpact
               k0 = k1;
               f0 = f1;
             }
-          cached = {k0, roots};
+          cached.first = k0;
         }
       std::vector<double> result;
       for (const double k : cached.second)
@@ -229,6 +238,10 @@ namespace DiskImpact
     double
     FreeDiskModes::kappa(const ModeLabel &mode) const
     {
+      // Roots already found (in ascending order) need no further scan.
+      const auto &known = root_cache[{mode.n, mode.family}].second;
+      if (known.size() > mode.l)
+        return known[mode.l];
       double kappa_max = 4. + 2. * mode.n + 4. * mode.l;
       for (;;)
         {

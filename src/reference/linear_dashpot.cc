@@ -50,5 +50,16 @@ namespace DiskImpact
       const double omega = std::sqrt(omega0 * omega0 - beta * beta);
       return std::exp(-beta * M_PI / omega);
     }
+
+    Collision
+    dashpot_collision(const double       beta,
+                      const double       omega0,
+                      const EndCriterion end)
+    {
+      const double   k = omega0 * omega0;
+      const ForceLaw law{[k](const double xi) { return k * xi; },
+                         [k](double) { return k; }};
+      return collide(1., 1., law, 2. * beta / k, end);
+    }
   } // namespace Reference
 } // namespace DiskImpact

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "reference/collision_ode.h"
+
 namespace DiskImpact
 {
   namespace Reference
@@ -33,5 +35,12 @@ namespace DiskImpact
      */
     double
     dashpot_restitution_overlap_criterion(double beta, double omega0);
+
+    /**
+     * The dashpot as the general collision ODE (collide()) with m = 1:
+     * F = omega0^2 xi and A F' = 2 beta, from xi' = 1, ended by @p end.
+     */
+    Collision
+    dashpot_collision(double beta, double omega0, EndCriterion end);
   } // namespace Reference
 } // namespace DiskImpact

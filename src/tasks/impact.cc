@@ -85,6 +85,12 @@ namespace DiskImpact
                       Patterns::List(Patterns::Double(), 0),
                       "Task 'sweep': Poisson ratios (as 'Poisson ratio' of "
                       "subsection Material) [-]; empty: the material's.");
+    prm.declare_entry("Relaxation times",
+                      "",
+                      Patterns::List(Patterns::Double(0.), 0),
+                      "Task 'sweep': Kelvin-Voigt relaxation times (as "
+                      "'Relaxation time' of subsection Material) [R/c]; "
+                      "empty: the material's.");
     prm.declare_entry("Error estimate",
                       "true",
                       Patterns::Bool(),
@@ -116,12 +122,13 @@ namespace DiskImpact
       Utilities::split_string_list(prm.get("Velocities"), ','));
     sweep_poisson_ratios = Utilities::string_to_double(
       Utilities::split_string_list(prm.get("Poisson ratios"), ','));
+    sweep_relaxation_times = Utilities::string_to_double(
+      Utilities::split_string_list(prm.get("Relaxation times"), ','));
     error_estimate = prm.get_bool("Error estimate");
-    for (const double v : sweep_velocities)
-      require(v > 0. && v <= 0.5,
-              "Impact: every entry of 'Velocities' must satisfy 0 < v/c <= "
-              "0.5, got " +
-                Utilities::to_string(v));
+    require_each(
+      sweep_velocities,
+      [](const double v) { return v > 0. && v <= 0.5; },
+      "Impact: every entry of 'Velocities' must satisfy 0 < v/c <= 0.5");
     prm.leave_subsection();
     require(impact_velocity > 0. && impact_velocity <= 0.5,
             "Impact: 'Velocity' must satisfy 0 < v/c <= 0.5, got " +
@@ -152,6 +159,12 @@ namespace DiskImpact
   Impact::poisson_ratios() const
   {
     return sweep_poisson_ratios;
+  }
+
+  const std::vector<double> &
+  Impact::relaxation_times() const
+  {
+    return sweep_relaxation_times;
   }
 
   bool

@@ -59,11 +59,14 @@ namespace DiskImpact
     velocity() const;
     void
     set_velocity(double v);
-    /// The sweep's velocities and Poisson ratios (empty: the material's).
+    /// The sweep's velocities, Poisson ratios and relaxation times (the
+    /// latter two empty: the material's).
     const std::vector<double> &
     velocities() const;
     const std::vector<double> &
     poisson_ratios() const;
+    const std::vector<double> &
+    relaxation_times() const;
     bool
     estimate_errors() const;
     /// The same impact on a mesh with every element size halved @p levels
@@ -94,6 +97,7 @@ namespace DiskImpact
     double              impact_velocity = 0.01;
     std::vector<double> sweep_velocities;
     std::vector<double> sweep_poisson_ratios;
+    std::vector<double> sweep_relaxation_times;
     bool                error_estimate          = true;
     unsigned int        elements_across_contact = 12;
     double              grading                 = 0.3;

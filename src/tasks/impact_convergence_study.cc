@@ -141,7 +141,7 @@ namespace DiskImpact
 
     // Each run's results as numbers, summed over the ranks (zero where a
     // rank did not run it).
-    constexpr unsigned int n_fields = 9;
+    constexpr unsigned int n_fields = 11;
     std::vector<double>    fields(n_fields * runs.size(), 0.);
     for (unsigned int i = 0; i < runs.size(); ++i)
       if (owner[i] == rank)
@@ -160,7 +160,9 @@ namespace DiskImpact
              s.time_step,
              static_cast<double>(s.n_dofs),
              static_cast<double>(s.steps),
-             seconds}};
+             seconds,
+             s.schwager_alpha,
+             s.one_dof_epsilon}};
           std::copy(values.begin(), values.end(), &fields[n_fields * i]);
           if (log != nullptr)
             *log << describe({runs[i].factor, runs[i].level, s, seconds})
@@ -183,6 +185,8 @@ namespace DiskImpact
         s.n_dofs          = static_cast<unsigned int>(f[6]);
         s.steps           = static_cast<unsigned int>(f[7]);
         done[i].wall_time = f[8];
+        s.schwager_alpha  = f[9];
+        s.one_dof_epsilon = f[10];
       }
     return done;
   }

@@ -185,7 +185,11 @@ namespace DiskImpact
       }
     catch (const std::domain_error &)
       {
-        const double speed    = impact.velocity();
+        // Beyond the log law's largest compression: no 1-DOF collision.
+        summary.one_dof_contact_time = std::nan("");
+        summary.one_dof_delta_max    = std::nan("");
+        summary.one_dof_epsilon      = std::nan("");
+        const double speed           = impact.velocity();
         const double delta    = speed * R * std::sqrt(std::log(4. / speed));
         contact_time_estimate = M_PI * delta / v0;
         largest_load          = delta / (R * std::log(4. * R / delta));
@@ -223,8 +227,9 @@ namespace DiskImpact
     contact = std::make_unique<ContactOperator>(
       op,
       parameters.contact.wall(),
-      parameters.contact.penalty_law(E2,
-                                     ContactOperator::smallest_edge_face(op)),
+      parameters.contact.wall_law(E2,
+                                  ContactOperator::smallest_edge_face(op),
+                                  R),
       geometry.center());
   }
 

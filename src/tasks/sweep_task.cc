@@ -34,20 +34,34 @@ namespace DiskImpact
                                                 "epsilon_base",
                                                 "steps",
                                                 "n_dofs",
-                                                "wall_time"};
+                                                "wall_time",
+                                                "relaxation_time",
+                                                "alpha",
+                                                "one_dof_epsilon"};
 
     using Row = std::vector<double>;
+
+    /// One point of the sweep: Poisson ratio and relaxation time (NaN: the
+    /// material's), velocity.
+    struct Point
+    {
+      double nu;
+      double tau;
+      double v;
+    };
 
     /// One point of the sweep on this rank alone: the row of
     /// restitution.csv, epsilon and its error from the convergence study
     /// if 'Error estimate' is set.
     Row
-    run_point(const Parameters &parameters, const double nu, const double v)
+    run_point(const Parameters &parameters, const Point &where)
     {
       Parameters point = parameters;
-      if (!std::isnan(nu))
-        point.material = parameters.material.with_poisson_ratio(nu);
-      point.impact.set_velocity(v);
+      if (!std::isnan(where.nu))
+        point.material = point.material.with_poisson_ratio(where.nu);
+      if (!std::isnan(where.tau))
+        point.material = point.material.with_relaxation_time(where.tau);
+      point.impact.set_velocity(where.v);
       const auto       start = std::chrono::steady_clock::now();
       ConvergedEpsilon result;
       if (parameters.impact.estimate_errors())
@@ -62,7 +76,7 @@ namespace DiskImpact
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
           .count();
       const ImpactSummary &s = result.base;
-      return {v,
+      return {where.v,
               point.material.poisson_ratio(),
               result.epsilon,
               result.error,
@@ -74,7 +88,10 @@ namespace DiskImpact
               s.epsilon,
               static_cast<double>(s.steps),
               static_cast<double>(s.n_dofs),
-              wall_time};
+              wall_time,
+              point.material.relaxation_time(),
+              s.schwager_alpha,
+              s.one_dof_epsilon};
     }
 
     std::string
@@ -85,9 +102,10 @@ namespace DiskImpact
            << std::setw(8) << row[1] << std::setw(7) << row[8]
            << std::setprecision(7) << std::setw(12) << row[2] << std::scientific
            << std::setprecision(1) << std::setw(10) << row[3] << std::fixed
-           << std::setprecision(4) << std::setw(12) << row[4] << std::scientific
-           << std::setprecision(1) << std::setw(11) << row[7] << std::fixed
-           << std::setw(8) << row[12] << " s\n";
+           << std::setprecision(4) << std::setw(12) << row[4] << std::setw(7)
+           << row[14] << std::scientific << std::setprecision(1)
+           << std::setw(11) << row[7] << std::fixed << std::setw(8) << row[12]
+           << " s\n";
       return line.str();
     }
 
@@ -188,16 +206,20 @@ namespace DiskImpact
     const unsigned int rank = Utilities::MPI::this_mpi_process(communicator);
     ConditionalOStream pcout(std::cout, rank == 0);
 
-    std::vector<std::pair<double, double>> points;
-    std::vector<double> ratios = parameters.impact.poisson_ratios();
-    if (ratios.empty())
-      ratios.push_back(std::nan(""));
-    for (const double nu : ratios)
-      for (const double v : parameters.impact.velocities())
-        points.emplace_back(nu, v);
+    // Empty lists: the material's value (NaN).
+    auto or_material = [](std::vector<double> values) {
+      if (values.empty())
+        values.push_back(std::nan(""));
+      return values;
+    };
+    std::vector<Point> points;
+    for (const double nu : or_material(parameters.impact.poisson_ratios()))
+      for (const double tau : or_material(parameters.impact.relaxation_times()))
+        for (const double v : parameters.impact.velocities())
+          points.push_back({nu, tau, v});
 
     pcout << "   v/c      nu    nu2       epsilon     error      contact "
-             "time  energy err.   time\n";
+             "time  alpha  energy err.   time\n";
     // Each rank takes the next point when it is free (a counter on rank 0,
     // MPI one-sided), sends its row to rank 0, which rewrites
     // restitution.csv whenever it has new rows.
@@ -209,7 +231,7 @@ namespace DiskImpact
       parameters.run.output_directory + "/restitution";
     for (int i = counter.next(); i < n_points; i = counter.next())
       {
-        Row row = run_point(parameters, points[i].first, points[i].second);
+        Row row = run_point(parameters, points[i]);
         if (rank == 0)
           {
             rows[i] = row;

@@ -74,6 +74,12 @@ namespace DiskImpact
         case Task::sweep:
           run_sweep(parameters, communicator);
           break;
+        case Task::reference_models:
+          parameters.reference_models.run(parameters, communicator);
+          break;
+        case Task::modal_expansion_impact:
+          parameters.modal_expansion.run(parameters, communicator);
+          break;
       }
   }
 } // namespace DiskImpact

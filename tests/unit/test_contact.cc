@@ -1,6 +1,6 @@
-// Contact: the penalty law, the contact operator's tangent against finite
-// differences of its residual, and the log contact law with its Lambert-W
-// inverse.
+// Contact: the penalty and exponential wall laws, the contact operator's
+// tangent against finite differences of its residual, and the log contact law
+// with its Lambert-W inverse.
 
 #include "contact.h"
 #include "contact_operator.h"
@@ -21,36 +21,66 @@
 
 using namespace DiskImpact;
 
+namespace
+{
+  WallLaw
+  penalty(const double stiffness)
+  {
+    WallLaw law;
+    law.stiffness = stiffness;
+    return law;
+  }
+
+  /// The exponential law of alpha = 200 on R = 1 with a threshold large
+  /// enough to see (1e-3 instead of 1e-16).
+  WallLaw
+  exponential()
+  {
+    WallLaw law;
+    law.kind      = WallLawKind::exponential;
+    law.decay     = 200.;
+    law.threshold = 1e-3;
+    return law;
+  }
+
+  /// p = -dE/dg and dp/dg by central differences at the gap @p g (away
+  /// from the kink at 0).
+  void
+  check_pressure_is_energy_gradient(const WallLaw &law, const double g)
+  {
+    const double h = 1e-9;
+    CHECK(law.pressure(g) ==
+          Approx(-(law.energy(g + h) - law.energy(g - h)) / (2 * h))
+            .epsilon(1e-6)
+            .margin(1e-12));
+    CHECK(law.pressure_derivative(g) ==
+          Approx((law.pressure(g + h) - law.pressure(g - h)) / (2 * h))
+            .epsilon(1e-6)
+            .margin(1e-12));
+  }
+} // namespace
+
 TEST_CASE("penalty law: pressure, derivative and energy", "[contact]")
 {
-  const PenaltyLaw law{250.};
+  const WallLaw law = penalty(250.);
   for (const double g : {-1e-3, -2e-5, 3e-5, 1e-2})
     {
       CAPTURE(g);
-      const double h = 1e-9;
       CHECK(law.pressure(g) == Approx(g < 0 ? -250. * g : 0.));
-      // p = -dE/dg, dp/dg by central differences (g away from the kink)
-      CHECK(law.pressure(g) ==
-            Approx(-(law.energy(g + h) - law.energy(g - h)) / (2 * h))
-              .epsilon(1e-6)
-              .margin(1e-12));
-      CHECK(law.pressure_derivative(g) ==
-            Approx((law.pressure(g + h) - law.pressure(g - h)) / (2 * h))
-              .epsilon(1e-6)
-              .margin(1e-12));
+      check_pressure_is_energy_gradient(law, g);
     }
 }
 
 TEST_CASE("penalty law: discrete gradient releases the exact energy",
           "[contact]")
 {
-  const PenaltyLaw law{300.};
-  const double     pairs[][2] = {{1e-3, -2e-3},
-                                 {-2e-3, 1e-3},
-                                 {-1e-3, -3e-3},
-                                 {2e-3, 5e-3},
-                                 {-1e-3, -1e-3},
-                                 {-1e-3, -1e-3 + 1e-16}};
+  const WallLaw law        = penalty(300.);
+  const double  pairs[][2] = {{1e-3, -2e-3},
+                              {-2e-3, 1e-3},
+                              {-1e-3, -3e-3},
+                              {2e-3, 5e-3},
+                              {-1e-3, -1e-3},
+                              {-1e-3, -1e-3 + 1e-16}};
   for (const auto &[g0, g1] : pairs)
     {
       CAPTURE(g0, g1);
@@ -72,6 +102,41 @@ TEST_CASE("penalty law: discrete gradient releases the exact energy",
     }
 }
 
+TEST_CASE("exponential law: pressure, energy and the discrete gradient",
+          "[contact]")
+{
+  const WallLaw law = exponential();
+  for (const double g : {-0.05, -1e-3, -2e-5, 3e-5})
+    {
+      CAPTURE(g);
+      CHECK(law.pressure(g) == Approx(g < 0 ? 1e-3 * std::exp(-200. * g) : 0.));
+      check_pressure_is_energy_gradient(law, g);
+    }
+  // The averaged pressure releases exactly the energy difference, also for
+  // steps far below and far above the decay length 1 / 200, and its
+  // derivative is that of the quotient.
+  const double pairs[][2] = {{-0.01, -0.03},
+                             {-0.03, -0.01},
+                             {-0.02, -0.02 + 1e-9},
+                             {-0.02, -0.02 - 1e-13},
+                             {1e-3, -2e-3},
+                             {-1e-3, 2e-3}};
+  for (const auto &[g0, g1] : pairs)
+    {
+      CAPTURE(g0, g1);
+      const double p = law.discrete_gradient_pressure(g0, g1);
+      CHECK(p * (g1 - g0) == Approx(-(law.energy(g1) - law.energy(g0)))
+                               .epsilon(1e-9)
+                               .margin(1e-15 * std::abs(law.energy(g0))));
+      const double step = 1e-6 * std::abs(g1 - g0) + 1e-12;
+      CHECK(law.discrete_gradient_derivative(g0, g1) ==
+            Approx((law.discrete_gradient_pressure(g0, g1 + step) -
+                    law.discrete_gradient_pressure(g0, g1 - step)) /
+                   (2 * step))
+              .epsilon(1e-4));
+    }
+}
+
 TEST_CASE("contact tangent is the derivative of the contact residual",
           "[contact][fe]")
 {
@@ -89,9 +154,10 @@ TEST_CASE("contact tangent is the derivative of the contact residual",
   ElasticityOperator op(2);
   op.setup(triangulation, geometry, true);
 
-  const RigidWall       wall{dealii::Point<2>(0., 0.),
+  const RigidWall wall{dealii::Point<2>(0., 0.),
                        dealii::Tensor<1, 2>({1., 0.})};
-  const PenaltyLaw      law{1e3};
+  // Both laws; the exponential one smooth, the penalty piecewise linear.
+  const WallLaw         law = GENERATE(penalty(1e3), exponential());
   const ContactOperator contact(op, wall, law, geometry.center());
 
   // A state that penetrates the wall over part of the edge, and a direction.
@@ -125,9 +191,10 @@ TEST_CASE("contact tangent is the derivative of the contact residual",
   tangent.compress(dealii::VectorOperation::add);
   REQUIRE(state0.force > 0.);
 
-  // J d against (r(u + h d) - r(u - h d)) / 2h; the residual is piecewise
-  // quadratic in h, so central differences are exact up to points that
-  // change contact status within +-h (a few, hence the tolerance).
+  // J d against (r(u + h d) - r(u - h d)) / 2h; the penalty residual is
+  // piecewise quadratic in h, so central differences are exact up to points
+  // that change contact status within +-h (a few, hence the tolerance); the
+  // exponential one's error is O(h^2 lambda^2) relative.
   const double h  = 1e-7;
   auto         jd = op.create_vector();
   tangent.vmult(jd, direction);

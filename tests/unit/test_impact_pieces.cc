@@ -107,7 +107,7 @@ TEST_CASE("1-DOF log-law collision against an ODE integration", "[impact]")
       };
       auto stepper = boost::numeric::odeint::make_dense_output(
         1e-12, 1e-12, boost::numeric::odeint::runge_kutta_dopri5<State>());
-      State  s{1e-300, v};
+      State  s{{1e-300, v}};
       double delta_max = 0.;
       stepper.initialize(s, 0., 1e-3 * reference.contact_time);
       // Zero crossing of component k of the dense output in the last step.

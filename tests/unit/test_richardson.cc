@@ -57,3 +57,23 @@ TEST_CASE("Richardson: order far from the expected one is not trusted",
   CHECK_FALSE(f.clean);
   CHECK(f.error == Approx(2.43).epsilon(1e-9));
 }
+
+TEST_CASE("linear extrapolation: exact on a line, the error bar sees a bend",
+          "[extrapolation]")
+{
+  // y = 0.95 - 0.3 x exactly: limit and slope exact, no residual, no error
+  const std::vector<double> x{0.1, 0.05, 0.025};
+  const auto line = extrapolate_linearly(x, {0.92, 0.935, 0.9425});
+  CHECK(line.limit == Approx(0.95).epsilon(1e-14));
+  CHECK(line.slope == Approx(-0.3).epsilon(1e-12));
+  CHECK(line.residual < 1e-14);
+  CHECK(line.error < 1e-14);
+  // y = 0.95 - 0.3 x + 2 x^2: the limit moves when the coarsest point is
+  // dropped; the error bar covers the true limit 0.95
+  std::vector<double> y;
+  for (const double xi : x)
+    y.push_back(0.95 - 0.3 * xi + 2. * xi * xi);
+  const auto bent = extrapolate_linearly(x, y);
+  CHECK(bent.residual > 0.);
+  CHECK(std::abs(bent.limit - 0.95) <= bent.error);
+}

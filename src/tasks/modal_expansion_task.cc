@@ -1,0 +1,388 @@
+#include "tasks/modal_expansion_task.h"
+
+#include "csv_table.h"
+#include "input_error.h"
+#include "parameters.h"
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <map>
+
+namespace DiskImpact
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /// One collision of the study.
+    struct Run
+    {
+      double       nu2;
+      double       v;
+      double       alpha;
+      unsigned int n_modes;
+    };
+
+    /// Numbers per run: epsilon, contact time, force, energy error, time
+    /// step, steps, wall time, then per listed mode n, l, family, omega,
+    /// energy after, average energy.
+    constexpr unsigned int n_run_fields  = 7;
+    constexpr unsigned int n_mode_fields = 6;
+
+    const std::vector<Reference::ModeFamily> families{
+      Reference::ModeFamily::rigid,
+      Reference::ModeFamily::radial,
+      Reference::ModeFamily::torsional,
+      Reference::ModeFamily::mixed};
+
+    std::vector<double>
+    pack(const Reference::ModalImpactResult &r,
+         const double                        seconds,
+         const unsigned int                  mode_rows)
+    {
+      std::vector<double> values{r.epsilon,
+                                 r.contact_time,
+                                 r.max_force,
+                                 r.energy_error,
+                                 r.time_step,
+                                 static_cast<double>(r.steps),
+                                 seconds};
+      auto                modes = r.modes;
+      std::sort(modes.begin(), modes.end(), [](const auto &a, const auto &b) {
+        return a.average_energy > b.average_energy;
+      });
+      modes.resize(std::min<std::size_t>(modes.size(), mode_rows));
+      for (const auto &m : modes)
+        for (const double value :
+             {static_cast<double>(m.label.n),
+              static_cast<double>(m.label.l),
+              static_cast<double>(
+                std::find(families.begin(), families.end(), m.label.family) -
+                families.begin()),
+              m.omega,
+              m.energy_after,
+              m.average_energy})
+          values.push_back(value);
+      values.resize(n_run_fields + n_mode_fields * mode_rows, -1.);
+      return values;
+    }
+
+    using CaseMap =
+      std::map<std::vector<double>, std::vector<std::pair<double, double>>>;
+
+    /**
+     * The seed's extrapolations: for each (nu2, v, alpha) epsilon(N) to
+     * N -> infinity, linear in 1 / sqrt(N); then those limits to
+     * alpha -> infinity, linear in 1 / alpha, with the error bar of that fit
+     * plus the largest of the N fits'. Writes modal_extrapolation.csv and
+     * prints the hard-contact limits.
+     */
+    void
+    write_extrapolation(const CaseMap      &by_case,
+                        const std::string  &filename,
+                        ConditionalOStream &out)
+    {
+      CsvTable table({"poisson_ratio_2d",
+                      "velocity",
+                      "alpha",
+                      "limit",
+                      "epsilon",
+                      "slope",
+                      "residual",
+                      "error"});
+      auto     add_row = [&](const double               nu2,
+                         const double               v,
+                         const double               alpha,
+                         const std::string         &limit,
+                         const LinearExtrapolation &fit) {
+        table.start_row();
+        for (const double value : {nu2, v, alpha})
+          table.add(value);
+        table.add(limit);
+        for (const double value :
+             {fit.limit, fit.slope, fit.residual, fit.error})
+          table.add(value);
+      };
+      // (nu2, v) -> (1 / alpha, epsilon_N->inf, its error)
+      std::map<std::pair<double, double>, std::vector<std::array<double, 3>>>
+        per_velocity;
+      for (const auto &[key, points] : by_case)
+        {
+          std::vector<double> x, y;
+          for (const auto &[n, epsilon] : points)
+            {
+              x.push_back(1. / std::sqrt(n));
+              y.push_back(epsilon);
+            }
+          LinearExtrapolation fit;
+          if (points.size() >= 2)
+            fit = extrapolate_linearly(x, y);
+          else
+            fit = {y[0], 0., 0., std::nan("")};
+          add_row(key[0], key[1], key[2], "modes", fit);
+          per_velocity[{key[0], key[1]}].push_back(
+            {{1. / key[2], fit.limit, fit.error}});
+        }
+      out << "Hard contact (alpha -> infinity) and all modes (N -> "
+             "infinity):\n    nu2     v/c      epsilon     error\n";
+      for (const auto &[key, points] : per_velocity)
+        {
+          if (points.size() < 2)
+            continue;
+          std::vector<double> x, y;
+          double              mode_error = 0.;
+          for (const auto &[inverse_alpha, epsilon, error] : points)
+            {
+              x.push_back(inverse_alpha);
+              y.push_back(epsilon);
+              mode_error = std::max(mode_error, error);
+            }
+          LinearExtrapolation fit = extrapolate_linearly(x, y);
+          fit.error += mode_error;
+          add_row(key.first,
+                  key.second,
+                  std::numeric_limits<double>::infinity(),
+                  "stiffness",
+                  fit);
+          out << std::fixed << std::setprecision(3) << std::setw(7) << key.first
+              << std::setw(8) << key.second << std::setprecision(5)
+              << std::setw(13) << fit.limit << std::scientific
+              << std::setprecision(1) << std::setw(10) << fit.error << '\n';
+        }
+      table.write(filename);
+    }
+  } // namespace
+
+  void
+  ModalExpansionStudy::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Modal expansion");
+    prm.declare_entry("Velocities",
+                      "0.1",
+                      Patterns::List(Patterns::Double(0.), 1),
+                      "Impact speeds v / c [-].");
+    prm.declare_entry("Potential stiffnesses",
+                      "100, 200, 500",
+                      Patterns::List(Patterns::Double(0.), 1),
+                      "Stiffnesses alpha of the wall potential (E2 R / "
+                      "alpha) exp(alpha x / R) per unit edge length (seed "
+                      "001, eq. 41) [-]; with two or more, epsilon is "
+                      "extrapolated to hard contact (linear in 1 / alpha).");
+    prm.declare_entry("Mode counts",
+                      "100, 200, 400, 800, 1600",
+                      Patterns::List(Patterns::Integer(1), 1),
+                      "Numbers N of the lowest free-disk modes symmetric "
+                      "about the impact axis [-]; with two or more, epsilon "
+                      "is extrapolated to N -> infinity (linear in "
+                      "1 / sqrt(N)).");
+    prm.declare_entry("Poisson ratios",
+                      "",
+                      Patterns::List(Patterns::Double(), 0),
+                      "In-plane Poisson ratios nu2 [-]; empty: the in-plane "
+                      "ratio of subsection Material.");
+    prm.declare_entry("Angular points",
+                      "256",
+                      Patterns::Integer(2),
+                      "Trapezoidal points on the quarter of the edge facing "
+                      "the wall [-].");
+    prm.declare_entry("Steps per period",
+                      "40",
+                      Patterns::Double(2.),
+                      "Time steps per 2 pi / max(omega_N, alpha v / R) [-].");
+    prm.declare_entry("Integrator",
+                      "runge kutta",
+                      Patterns::Selection("runge kutta|splitting"),
+                      "'runge kutta': RK4 on the interaction-picture "
+                      "amplitudes (seed 001, eq. 44 corrected); 'splitting': "
+                      "symplectic Strang splitting, each oscillator rotated "
+                      "exactly (docs/modal-expansion.md).");
+    prm.declare_entry("Mode energies",
+                      "10",
+                      Patterns::Integer(0, 100),
+                      "Modes listed in modal_expansion_modes.csv per run "
+                      "with the largest N, by average energy during the "
+                      "collision [-].");
+    prm.leave_subsection();
+  }
+
+  void
+  ModalExpansionStudy::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Modal expansion");
+    auto list = [&](const std::string &entry) {
+      return Utilities::string_to_double(
+        Utilities::split_string_list(prm.get(entry), ','));
+    };
+    velocities     = list("Velocities");
+    alphas         = list("Potential stiffnesses");
+    poisson_ratios = list("Poisson ratios");
+    for (const int n : Utilities::string_to_int(
+           Utilities::split_string_list(prm.get("Mode counts"), ',')))
+      mode_counts.push_back(n);
+    angular_points   = prm.get_integer("Angular points");
+    steps_per_period = prm.get_double("Steps per period");
+    integrator       = prm.get("Integrator") == "splitting" ?
+                         Reference::ModalIntegrator::strang_splitting :
+                         Reference::ModalIntegrator::runge_kutta_interaction_picture;
+    mode_rows        = prm.get_integer("Mode energies");
+    prm.leave_subsection();
+    require_each(
+      velocities,
+      [](const double v) { return v > 0. && v < 1.; },
+      "Modal expansion: every entry of 'Velocities' must satisfy 0 < v/c < 1");
+    require_each(
+      alphas,
+      [](const double a) { return a > 0.; },
+      "Modal expansion: every entry of 'Potential stiffnesses' must be "
+      "positive");
+    require_each(
+      poisson_ratios,
+      [](const double nu2) { return nu2 > -1. && nu2 < 1.; },
+      "Modal expansion: every entry of 'Poisson ratios' must satisfy "
+      "-1 < nu2 < 1");
+  }
+
+  void
+  ModalExpansionStudy::run(const Parameters &parameters,
+                           MPI_Comm          communicator) const
+  {
+    const unsigned int rank    = Utilities::MPI::this_mpi_process(communicator);
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(communicator);
+    ConditionalOStream pcout(std::cout, rank == 0);
+
+    std::vector<double> ratios = poisson_ratios;
+    if (ratios.empty())
+      ratios.push_back(parameters.material.in_plane_poisson_ratio());
+    const unsigned int largest_n =
+      *std::max_element(mode_counts.begin(), mode_counts.end());
+    std::vector<Run> runs;
+    for (const double nu2 : ratios)
+      for (const double v : velocities)
+        for (const double alpha : alphas)
+          for (const unsigned int n : mode_counts)
+            runs.push_back({nu2, v, alpha, n});
+
+    // Round robin over the ranks; each rank builds the mode shapes of the
+    // Poisson ratios it needs once, for the largest N.
+    const unsigned int  per_run = n_run_fields + n_mode_fields * mode_rows;
+    std::vector<double> fields(per_run * runs.size(), 0.);
+    std::map<double, std::vector<Reference::FreeDiskModeShape>> bases;
+    pcout << "    nu2     v/c   alpha      N      epsilon   energy err."
+             "   time\n";
+    for (unsigned int i = rank; i < runs.size(); i += n_ranks)
+      {
+        const Run &run = runs[i];
+        if (bases.count(run.nu2) == 0)
+          {
+            const auto start = std::chrono::steady_clock::now();
+            bases[run.nu2] =
+              Reference::symmetric_mode_shapes(run.nu2, largest_n);
+            pcout << "  " << largest_n << " mode shapes for nu2 = " << run.nu2
+                  << ": "
+                  << std::chrono::duration<double>(
+                       std::chrono::steady_clock::now() - start)
+                       .count()
+                  << " s\n";
+          }
+        Reference::ModalImpactConfig config;
+        config.in_plane_poisson_ratio = run.nu2;
+        config.velocity               = run.v;
+        config.alpha                  = run.alpha;
+        config.n_modes                = run.n_modes;
+        config.angular_points         = angular_points;
+        config.steps_per_period       = steps_per_period;
+        config.integrator             = integrator;
+        const auto start              = std::chrono::steady_clock::now();
+        const auto result =
+          Reference::ModalExpansionImpact(config, bases[run.nu2]).run();
+        const double seconds = std::chrono::duration<double>(
+                                 std::chrono::steady_clock::now() - start)
+                                 .count();
+        AssertThrow(result.separated,
+                    ExcMessage("modal expansion: the disk did not leave the "
+                               "wall (nu2 = " +
+                               Utilities::to_string(run.nu2) +
+                               ", v = " + Utilities::to_string(run.v) + ")"));
+        const auto values = pack(result, seconds, mode_rows);
+        std::copy(values.begin(), values.end(), &fields[per_run * i]);
+        pcout << std::fixed << std::setprecision(3) << std::setw(7) << run.nu2
+              << std::setw(8) << run.v << std::setprecision(0) << std::setw(8)
+              << run.alpha << std::setw(7) << run.n_modes
+              << std::setprecision(7) << std::setw(13) << result.epsilon
+              << std::scientific << std::setprecision(1) << std::setw(12)
+              << result.energy_error << std::fixed << std::setprecision(1)
+              << std::setw(7) << seconds << " s\n"
+              << std::flush;
+      }
+    Utilities::MPI::sum(fields, communicator, fields);
+    if (rank != 0)
+      return;
+
+    const std::string directory = parameters.run.output_directory + "/";
+    CsvTable          table({"poisson_ratio_2d",
+                             "velocity",
+                             "alpha",
+                             "n_modes",
+                             "epsilon",
+                             "contact_time",
+                             "force_max",
+                             "energy_error",
+                             "time_step",
+                             "steps",
+                             "wall_time"});
+    CsvTable          modes({"poisson_ratio_2d",
+                             "velocity",
+                             "alpha",
+                             "n_modes",
+                             "rank",
+                             "n",
+                             "l",
+                             "family",
+                             "omega",
+                             "energy_fraction",
+                             "average_energy_fraction"});
+    CaseMap           by_case; // (nu2, v, alpha) -> (N, epsilon)
+    for (unsigned int i = 0; i < runs.size(); ++i)
+      {
+        const Run    &run = runs[i];
+        const double *f   = &fields[per_run * i];
+        table.start_row();
+        for (const double value : {run.nu2, run.v, run.alpha})
+          table.add(value);
+        table.add(run.n_modes);
+        for (unsigned int k = 0; k < n_run_fields; ++k)
+          table.add(f[k]);
+        by_case[{run.nu2, run.v, run.alpha}].emplace_back(run.n_modes, f[0]);
+        if (run.n_modes != largest_n)
+          continue;
+        for (unsigned int m = 0; m < mode_rows; ++m)
+          {
+            const double *mode = f + n_run_fields + n_mode_fields * m;
+            if (mode[0] < 0.)
+              break;
+            modes.start_row();
+            for (const double value : {run.nu2, run.v, run.alpha})
+              modes.add(value);
+            modes.add(run.n_modes);
+            modes.add(m + 1);
+            modes.add(static_cast<unsigned int>(mode[0]));
+            modes.add(static_cast<unsigned int>(mode[1]));
+            modes.add(to_string(families[static_cast<unsigned int>(mode[2])]));
+            for (unsigned int k = 3; k < n_mode_fields; ++k)
+              modes.add(mode[k]);
+          }
+      }
+    table.write(directory + "modal_expansion.csv");
+    modes.write(directory + "modal_expansion_modes.csv");
+    write_extrapolation(by_case, directory + "modal_extrapolation.csv", pcout);
+  }
+} // namespace DiskImpact

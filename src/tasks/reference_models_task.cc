@@ -1,0 +1,279 @@
+#include "tasks/reference_models_task.h"
+
+#include "csv_table.h"
+#include "input_error.h"
+#include "parameters.h"
+#include "reference/collision_ode.h"
+#include "reference/linear_dashpot.h"
+#include "reference/schwager_disk.h"
+#include "reference/viscoelastic_spheres.h"
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <map>
+
+namespace DiskImpact
+{
+  using namespace dealii;
+
+  namespace
+  {
+    std::vector<double>
+    parse_list(const ParameterHandler &prm, const std::string &entry)
+    {
+      return Utilities::string_to_double(
+        Utilities::split_string_list(prm.get(entry), ','));
+    }
+
+    /// The 1-DOF disk collision in units E2 = rho = R = 1 (m = pi, c = 1,
+    /// A = alpha); NaN where the log law cannot stop the disk (seed 000,
+    /// eq. 50: the scaled velocity beyond 1 / (sqrt(2) e)).
+    Reference::Collision
+    disk_collision(const double                  v,
+                   const double                  alpha,
+                   const double                  constant,
+                   const Reference::EndCriterion end)
+    {
+      if (!(Reference::schwager_scaled_velocity(v, constant) <
+            Reference::schwager_maximum_scaled_velocity()))
+        {
+          const double nan = std::nan("");
+          return {nan, nan, nan};
+        }
+      return Reference::collide(
+        M_PI, v, Reference::disk_force_law(1., 1., constant), alpha, end);
+    }
+
+    /// @p formula(v_s) where the scaled velocity v_s is below the largest
+    /// the log law allows (seed 000, eq. 50); NaN beyond.
+    template <typename Formula>
+    double
+    within_law(const double scaled_velocity, const Formula &formula)
+    {
+      return scaled_velocity < Reference::schwager_maximum_scaled_velocity() ?
+               formula(scaled_velocity) :
+               std::nan("");
+    }
+  } // namespace
+
+  void
+  ReferenceModels::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Reference models");
+    prm.declare_entry("Model",
+                      "disk",
+                      Patterns::Selection("disk|dashpot|spheres"),
+                      "Task 'reference models': 'disk' (log law with "
+                      "Kelvin-Voigt dissipation, seed 000), 'dashpot' (linear "
+                      "spring and dashpot, seed 002) or 'spheres' "
+                      "(viscoelastic Hertz spheres, seed 003).");
+    prm.declare_entry("Velocities",
+                      "0.001, 0.002, 0.005, 0.01, 0.02, 0.05, 0.1",
+                      Patterns::List(Patterns::Double(0.), 1),
+                      "Model 'disk': impact speeds v / c [-].");
+    prm.declare_entry("Alphas",
+                      "0.02, 0.05, 0.1",
+                      Patterns::List(Patterns::Double(0.), 1),
+                      "Model 'disk': Schwager's damping parameter alpha = A "
+                      "sqrt(pi E2 / m) = tau c / R [-].");
+    prm.declare_entry("Damping ratios",
+                      "0.05, 0.2, 0.5, 0.7, 0.8, 0.9, 1, 1.5, 3, 10",
+                      Patterns::List(Patterns::Double(0.), 1),
+                      "Model 'dashpot': beta / omega0 [-].");
+    prm.declare_entry("Velocity ratios",
+                      "1e-8, 1e-6, 1e-5, 1e-4, 1e-3, 1e-2, 0.1, 1, 10, 100",
+                      Patterns::List(Patterns::Double(0.), 1),
+                      "Model 'spheres': g / g* (seed 003, eq. 30) [-].");
+    prm.leave_subsection();
+  }
+
+  void
+  ReferenceModels::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Reference models");
+    const std::map<std::string, ReferenceModel> models{
+      {"disk", ReferenceModel::disk},
+      {"dashpot", ReferenceModel::dashpot},
+      {"spheres", ReferenceModel::spheres}};
+    model           = models.at(prm.get("Model"));
+    velocities      = parse_list(prm, "Velocities");
+    alphas          = parse_list(prm, "Alphas");
+    damping_ratios  = parse_list(prm, "Damping ratios");
+    velocity_ratios = parse_list(prm, "Velocity ratios");
+    prm.leave_subsection();
+    auto positive = [](const double x) { return x > 0.; };
+    for (const auto &[entry, values] :
+         {std::make_pair("Velocities", &velocities),
+          std::make_pair("Damping ratios", &damping_ratios),
+          std::make_pair("Velocity ratios", &velocity_ratios)})
+      require_each(*values,
+                   positive,
+                   std::string("Reference models: every entry of '") + entry +
+                     "' must be positive");
+  }
+
+  void
+  ReferenceModels::run(const Parameters &parameters,
+                       MPI_Comm          communicator) const
+  {
+    if (Utilities::MPI::this_mpi_process(communicator) != 0)
+      return;
+    const std::string directory = parameters.run.output_directory + "/";
+    switch (model)
+      {
+        case ReferenceModel::disk:
+          tabulate_disk(parameters, directory + "reference_disk.csv");
+          break;
+        case ReferenceModel::dashpot:
+          tabulate_dashpot(directory + "reference_dashpot.csv");
+          break;
+        case ReferenceModel::spheres:
+          tabulate_spheres(directory + "reference_spheres.csv");
+          break;
+      }
+  }
+
+  void
+  ReferenceModels::tabulate_disk(const Parameters  &parameters,
+                                 const std::string &filename) const
+  {
+    const double nu2 = parameters.material.in_plane_poisson_ratio();
+    const double C   = parameters.impact.contact_law_constant_value(nu2);
+    const Reference::SchwagerDiskRestitution schwager;
+    std::cout << "Disk: log law with C = " << C << " (nu2 = " << nu2
+              << "): epsilon of the 1-DOF ODE (force and overlap end) and "
+                 "eqs. 56, 80 of seed 000\n"
+              << "    v/c   alpha   force end   overlap end       eq. 56"
+                 "       eq. 80\n";
+    CsvTable table({"velocity",
+                    "alpha",
+                    "scaled_velocity",
+                    "epsilon_ode",
+                    "epsilon_ode_overlap",
+                    "epsilon_first_order",
+                    "epsilon_second_order",
+                    "contact_time",
+                    "delta_max"});
+    for (const double alpha : alphas)
+      for (const double v : velocities)
+        {
+          const auto force =
+            disk_collision(v, alpha, C, Reference::EndCriterion::force);
+          const auto overlap =
+            disk_collision(v, alpha, C, Reference::EndCriterion::overlap);
+          const double v_s    = Reference::schwager_scaled_velocity(v, C);
+          const double first  = within_law(v_s, [&](const double speed) {
+            return schwager.first_order(alpha, speed);
+          });
+          const double second = within_law(v_s, [&](const double speed) {
+            return schwager.second_order(alpha, speed);
+          });
+          table.start_row();
+          for (const double value : {v,
+                                     alpha,
+                                     v_s,
+                                     force.epsilon,
+                                     overlap.epsilon,
+                                     first,
+                                     second,
+                                     force.contact_time,
+                                     force.max_overlap})
+            table.add(value);
+          std::cout << std::fixed << std::setprecision(4) << std::setw(7) << v
+                    << std::setw(8) << alpha << std::setprecision(7);
+          for (const double epsilon :
+               {force.epsilon, overlap.epsilon, first, second})
+            std::cout << std::setw(13) << epsilon;
+          std::cout << '\n';
+        }
+    table.write(filename);
+  }
+
+  void
+  ReferenceModels::tabulate_dashpot(const std::string &filename) const
+  {
+    std::cout << "Linear dashpot: epsilon(beta / omega0)\n"
+              << "  beta/omega0   eq. 21        ODE           overlap end\n";
+    CsvTable table({"damping_ratio",
+                    "epsilon",
+                    "epsilon_ode",
+                    "epsilon_overlap_criterion",
+                    "epsilon_printed"});
+    for (const double ratio : damping_ratios)
+      {
+        const double epsilon = Reference::dashpot_restitution(ratio, 1.);
+        const double ode =
+          Reference::dashpot_collision(ratio,
+                                       1.,
+                                       Reference::EndCriterion::force)
+            .epsilon;
+        const double overlap =
+          Reference::dashpot_restitution_overlap_criterion(ratio, 1.);
+        // The printed middle branch exists only on that branch.
+        const bool   middle = ratio >= M_SQRT1_2 && ratio < 1.;
+        const double printed =
+          middle ?
+            Reference::dashpot_restitution_printed_middle_branch(ratio, 1.) :
+            epsilon;
+        table.start_row();
+        table.add(ratio);
+        table.add(epsilon);
+        table.add(ode);
+        table.add(overlap);
+        table.add(printed);
+        std::cout << std::fixed << std::setprecision(4) << std::setw(11)
+                  << ratio << std::setprecision(10) << std::setw(14) << epsilon
+                  << std::setw(14) << ode << std::setw(14) << overlap << '\n';
+      }
+    table.write(filename);
+  }
+
+  void
+  ReferenceModels::tabulate_spheres(const std::string &filename) const
+  {
+    using Reference::EndCriterion;
+    std::cout << "Viscoelastic Hertz spheres: epsilon(g / g*)\n"
+              << "    g/g*      ODE (force)  ODE (overlap)  series eq. 32"
+                 "  Pade eq. 35\n";
+    CsvTable    table({"velocity_ratio",
+                       "scaled_velocity",
+                       "epsilon_ode",
+                       "epsilon_ode_overlap",
+                       "epsilon_series",
+                       "epsilon_series_force",
+                       "epsilon_series_printed",
+                       "epsilon_pade",
+                       "epsilon_pade_printed"});
+    const auto &printed = Reference::printed_sphere_coefficients;
+    for (const double ratio : velocity_ratios)
+      {
+        // The seed's expansion variable (g / g*)^(1/5) (eq. 32).
+        const double              u = std::pow(ratio, 0.2);
+        const std::vector<double> row{
+          ratio,
+          u,
+          Reference::sphere_restitution_ode(u, EndCriterion::force),
+          Reference::sphere_restitution_ode(u, EndCriterion::overlap),
+          Reference::sphere_restitution_series(u, EndCriterion::overlap),
+          Reference::sphere_restitution_series(u, EndCriterion::force),
+          Reference::sphere_restitution_series(u,
+                                               EndCriterion::overlap,
+                                               printed),
+          Reference::sphere_restitution_pade(u),
+          Reference::sphere_restitution_pade(u, printed)};
+        table.start_row();
+        for (const double value : row)
+          table.add(value);
+        std::cout << std::scientific << std::setprecision(2) << std::setw(10)
+                  << ratio << std::fixed << std::setprecision(7);
+        for (const unsigned int k : {2, 3, 4, 7})
+          std::cout << std::setw(14) << row[k];
+        std::cout << '\n';
+      }
+    table.write(filename);
+  }
+} // namespace DiskImpact

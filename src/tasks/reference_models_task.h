@@ -1,0 +1,62 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <mpi.h>
+
+#include <string>
+#include <vector>
+
+namespace DiskImpact
+{
+  struct Parameters;
+
+  /// Which reduced collision model 'Task = reference models' tabulates.
+  enum class ReferenceModel
+  {
+    disk,    ///< log law with Kelvin-Voigt dissipation (seed 000)
+    dashpot, ///< linear spring and dashpot (seed 002)
+    spheres  ///< viscoelastic Hertz spheres (seed 003)
+  };
+
+  /**
+   * Task 'reference models' (subsection "Reference models"): epsilon of a
+   * reduced collision model (src/reference/) on a grid of its parameters,
+   * without finite elements, written to reference_<model>.csv:
+   * - disk: for every v/c of 'Velocities' and alpha of 'Alphas', the
+   *   1-DOF ODE m xi'' + F + A xi' F' = 0 with the log law (constant of
+   *   subsection Impact, nu2 of subsection Material) ended by the force
+   *   (seed 002) and by the overlap, and Schwager's eqs. 56 and 80;
+   * - dashpot: for every beta / omega0 of 'Damping ratios', eq. 21 of seed
+   *   002 (corrected), the ODE, and the naive overlap criterion;
+   * - spheres: for every g / g* of 'Velocity ratios', the ODE, the series
+   *   eq. 32 and the Pade approximant eq. 35 of seed 003.
+   */
+  class ReferenceModels
+  {
+  public:
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    /// Tabulate the chosen model (rank 0 writes the file).
+    void
+    run(const Parameters &parameters, MPI_Comm communicator) const;
+
+  private:
+    ReferenceModel      model = ReferenceModel::disk;
+    std::vector<double> velocities;
+    std::vector<double> alphas;
+    std::vector<double> damping_ratios;
+    std::vector<double> velocity_ratios;
+
+    void
+    tabulate_disk(const Parameters  &parameters,
+                  const std::string &filename) const;
+    void
+    tabulate_dashpot(const std::string &filename) const;
+    void
+    tabulate_spheres(const std::string &filename) const;
+  };
+} // namespace DiskImpact
