@@ -111,7 +111,17 @@ namespace DiskImpact
         for (const double value :
              {fit.limit, fit.slope, fit.residual, fit.error})
           table.add(value);
+        out << std::fixed << std::setprecision(3) << std::setw(7) << nu2
+            << std::setw(8) << v << std::setprecision(0) << std::setw(8)
+            << alpha << std::setw(11) << limit << std::setprecision(5)
+            << std::setw(11) << fit.limit << std::setw(11) << fit.slope
+            << std::scientific << std::setprecision(1) << std::setw(10)
+            << fit.residual << std::setw(10) << fit.error << '\n';
       };
+      out << "Fits epsilon = limit + slope x: x = 1/sqrt(N) for each alpha "
+             "(N -> infinity), then x = 1/alpha (hard contact, alpha = inf):\n"
+             "    nu2     v/c   alpha      limit    epsilon      slope  "
+             "residual     error\n";
       // (nu2, v) -> (1 / alpha, epsilon_N->inf, its error)
       std::map<std::pair<double, double>, std::vector<std::array<double, 3>>>
         per_velocity;
@@ -132,8 +142,6 @@ namespace DiskImpact
           per_velocity[{key[0], key[1]}].push_back(
             {{1. / key[2], fit.limit, fit.error}});
         }
-      out << "Hard contact (alpha -> infinity) and all modes (N -> "
-             "infinity):\n    nu2     v/c      epsilon     error\n";
       for (const auto &[key, points] : per_velocity)
         {
           if (points.size() < 2)
@@ -153,10 +161,6 @@ namespace DiskImpact
                   std::numeric_limits<double>::infinity(),
                   "stiffness",
                   fit);
-          out << std::fixed << std::setprecision(3) << std::setw(7) << key.first
-              << std::setw(8) << key.second << std::setprecision(5)
-              << std::setw(13) << fit.limit << std::scientific
-              << std::setprecision(1) << std::setw(10) << fit.error << '\n';
         }
       table.write(filename);
     }
