@@ -202,12 +202,6 @@ namespace DiskImpact
     return kind;
   }
 
-  double
-  ContactParameters::potential_stiffness() const
-  {
-    return alpha;
-  }
-
   WallLaw
   ContactParameters::wall_law(const double in_plane_young_modulus,
                               const double h_contact,
@@ -220,12 +214,6 @@ namespace DiskImpact
     law.decay     = alpha / radius;
     law.threshold = exponential_cut * in_plane_young_modulus;
     return law;
-  }
-
-  double
-  ContactParameters::exponential_law_offset(const double radius) const
-  {
-    return -std::log(exponential_cut) * radius / alpha;
   }
 
   void

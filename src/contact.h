@@ -97,9 +97,6 @@ namespace DiskImpact
 
     WallLawKind
     law_kind() const;
-    /// alpha of the exponential potential [-].
-    double
-    potential_stiffness() const;
 
     /// The penalty law for in-plane modulus E2 and contact element size h.
     WallLaw
@@ -110,11 +107,6 @@ namespace DiskImpact
     wall_law(double in_plane_young_modulus,
              double h_contact,
              double radius) const;
-
-    /// Where the exponential law starts to act: the distance of its plane
-    /// g = 0 in front of the wall plane, ln(E2 / p_c) R / alpha.
-    double
-    exponential_law_offset(double radius) const;
 
     /**
      * Check that the wall touches the undeformed disk (within

@@ -24,7 +24,7 @@ namespace DiskImpact
 
   ContactOperator::ContactOperator(const ElasticityOperator &op,
                                    const RigidWall          &wall,
-                                   const WallLaw         &law,
+                                   const WallLaw            &law,
                                    const Point<2>           &disk_center)
       : op(op)
       , wall(wall)

@@ -54,16 +54,16 @@ namespace DiskImpact
   /**
    * The contact (WallLaw) of the disk's curved edge with a rigid wall, on the
    * quadrature points of the edge faces: the residual contribution
-   * -int p (n . v) ds and its consistent tangent int k H(-g) (n . u)(n . v) ds
-   * (H the Heaviside function), for small strains (reference edge, current
-   * gap).
+   * -int p (n . v) ds and its consistent tangent -int p'(g) (n . u)(n . v) ds
+   * (p' = -k H(-g) for the penalty, H the Heaviside function), for small
+   * strains (reference edge, current gap).
    */
   class ContactOperator
   {
   public:
     ContactOperator(const ElasticityOperator &op,
                     const RigidWall          &wall,
-                    const WallLaw         &law,
+                    const WallLaw            &law,
                     const dealii::Point<2>   &disk_center);
 
     /**
@@ -105,7 +105,7 @@ namespace DiskImpact
   private:
     const ElasticityOperator &op;
     RigidWall                 wall;
-    WallLaw                law;
+    WallLaw                   law;
     /// Where t = 0: the point of the wall nearest the disk's centre.
     dealii::Point<2>     origin;
     dealii::Tensor<1, 2> tangent_direction;

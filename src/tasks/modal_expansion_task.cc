@@ -16,6 +16,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <stdexcept>
 
 namespace DiskImpact
 {
@@ -311,11 +312,15 @@ namespace DiskImpact
         const double seconds = std::chrono::duration<double>(
                                  std::chrono::steady_clock::now() - start)
                                  .count();
-        AssertThrow(result.separated,
-                    ExcMessage("modal expansion: the disk did not leave the "
-                               "wall (nu2 = " +
-                               Utilities::to_string(run.nu2) +
-                               ", v = " + Utilities::to_string(run.v) + ")"));
+        if (!result.separated)
+          throw std::runtime_error(
+            "modal expansion: the disk did not leave the wall within the "
+            "time limit (nu2 = " +
+            Utilities::to_string(run.nu2) +
+            ", v = " + Utilities::to_string(run.v) +
+            ", alpha = " + Utilities::to_string(run.alpha) +
+            ", N = " + Utilities::to_string(run.n_modes) +
+            "); more 'Steps per period' may help");
         const auto values = pack(result, seconds, mode_rows);
         std::copy(values.begin(), values.end(), &fields[per_run * i]);
         pcout << std::fixed << std::setprecision(3) << std::setw(7) << run.nu2
