@@ -73,10 +73,22 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const bool                               is_root =
     dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  // Errors are reported as one line on standard error.
+  const bool several_ranks =
+    dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1;
+  // Errors are reported as one line on standard error. Input errors arise
+  // on every rank alike (rank 0 reports them); an error during a run may
+  // arise on one rank alone while the others wait for it in a collective
+  // call: that rank reports it and aborts all ranks.
   auto report = [is_root](const std::string &kind, const std::string &what) {
     if (is_root)
       std::cerr << "diskimpact: " << kind << what << std::endl;
+    return 1;
+  };
+  auto report_and_abort = [several_ranks](const std::string &kind,
+                                          const std::string &what) {
+    std::cerr << "diskimpact: " << kind << what << std::endl;
+    if (several_ranks)
+      MPI_Abort(MPI_COMM_WORLD, 1);
     return 1;
   };
   try
@@ -91,10 +103,10 @@ main(int argc, char **argv)
     {
       std::ostringstream info;
       e.print_info(info);
-      return report("internal error: ", info.str());
+      return report_and_abort("internal error: ", info.str());
     }
   catch (const std::exception &e)
     {
-      return report("error: ", e.what());
+      return report_and_abort("error: ", e.what());
     }
 }

@@ -2,6 +2,7 @@
 
 #include "csv_table.h"
 #include "input_error.h"
+#include "parameter_lists.h"
 #include "tasks/impact_simulation.h"
 
 #include <deal.II/base/utilities.h>
@@ -118,13 +119,10 @@ namespace DiskImpact
     margin                  = prm.get_double("Margin");
     output_interval         = prm.get_integer("Output interval");
     projected_modes         = prm.get_integer("Mode energies");
-    sweep_velocities        = Utilities::string_to_double(
-      Utilities::split_string_list(prm.get("Velocities"), ','));
-    sweep_poisson_ratios = Utilities::string_to_double(
-      Utilities::split_string_list(prm.get("Poisson ratios"), ','));
-    sweep_relaxation_times = Utilities::string_to_double(
-      Utilities::split_string_list(prm.get("Relaxation times"), ','));
-    error_estimate = prm.get_bool("Error estimate");
+    sweep_velocities        = get_double_list(prm, "Velocities");
+    sweep_poisson_ratios    = get_double_list(prm, "Poisson ratios");
+    sweep_relaxation_times  = get_double_list(prm, "Relaxation times");
+    error_estimate          = prm.get_bool("Error estimate");
     require_each(
       sweep_velocities,
       [](const double v) { return v > 0. && v <= 0.5; },

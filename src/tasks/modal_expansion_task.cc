@@ -2,6 +2,7 @@
 
 #include "csv_table.h"
 #include "input_error.h"
+#include "parameter_lists.h"
 #include "parameters.h"
 
 #include <deal.II/base/conditional_ostream.h>
@@ -223,13 +224,9 @@ namespace DiskImpact
   ModalExpansionStudy::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Modal expansion");
-    auto list = [&](const std::string &entry) {
-      return Utilities::string_to_double(
-        Utilities::split_string_list(prm.get(entry), ','));
-    };
-    velocities     = list("Velocities");
-    alphas         = list("Potential stiffnesses");
-    poisson_ratios = list("Poisson ratios");
+    velocities     = get_double_list(prm, "Velocities");
+    alphas         = get_double_list(prm, "Potential stiffnesses");
+    poisson_ratios = get_double_list(prm, "Poisson ratios");
     for (const int n : Utilities::string_to_int(
            Utilities::split_string_list(prm.get("Mode counts"), ',')))
       mode_counts.push_back(n);

@@ -4,6 +4,7 @@
 #include "csv_table.h"
 #include "elasticity_operator.h"
 #include "input_error.h"
+#include "parameter_lists.h"
 #include "parameters.h"
 #include "reference/log_contact_law.h"
 #include "state_output.h"
@@ -314,8 +315,7 @@ namespace DiskImpact
   QuasistaticContact::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Quasistatic contact");
-    loads = Utilities::string_to_double(
-      Utilities::split_string_list(prm.get("Loads"), ','));
+    loads                   = get_double_list(prm, "Loads");
     elements_across_contact = prm.get_integer("Elements across contact");
     grading                 = prm.get_double("Grading");
     newton_tolerance        = prm.get_double("Newton tolerance");

@@ -2,6 +2,7 @@
 
 #include "csv_table.h"
 #include "input_error.h"
+#include "parameter_lists.h"
 #include "parameters.h"
 #include "reference/collision_ode.h"
 #include "reference/linear_dashpot.h"
@@ -22,13 +23,6 @@ namespace DiskImpact
 
   namespace
   {
-    std::vector<double>
-    parse_list(const ParameterHandler &prm, const std::string &entry)
-    {
-      return Utilities::string_to_double(
-        Utilities::split_string_list(prm.get(entry), ','));
-    }
-
     /// The 1-DOF disk collision in units E2 = rho = R = 1 (m = pi, c = 1,
     /// A = alpha); NaN where the log law cannot stop the disk (seed 000,
     /// eq. 50: the scaled velocity beyond 1 / (sqrt(2) e)).
@@ -100,10 +94,10 @@ namespace DiskImpact
       {"dashpot", ReferenceModel::dashpot},
       {"spheres", ReferenceModel::spheres}};
     model           = models.at(prm.get("Model"));
-    velocities      = parse_list(prm, "Velocities");
-    alphas          = parse_list(prm, "Alphas");
-    damping_ratios  = parse_list(prm, "Damping ratios");
-    velocity_ratios = parse_list(prm, "Velocity ratios");
+    velocities      = get_double_list(prm, "Velocities");
+    alphas          = get_double_list(prm, "Alphas");
+    damping_ratios  = get_double_list(prm, "Damping ratios");
+    velocity_ratios = get_double_list(prm, "Velocity ratios");
     prm.leave_subsection();
     auto positive = [](const double x) { return x > 0.; };
     for (const auto &[entry, values] :
