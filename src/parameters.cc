@@ -57,6 +57,9 @@ namespace DiskImpact
                 "Task 'quasistatic contact' needs 'Law = penalty' in "
                 "subsection Contact");
       }
+    if (run.task == Task::reference_models)
+      reference_models.check_velocities(
+        impact.contact_law_constant_value(material.in_plane_poisson_ratio()));
     if (run.task == Task::impact || run.task == Task::impact_convergence ||
         run.task == Task::sweep)
       contact.check_wall(geometry, 0.05);

@@ -6,12 +6,14 @@
 #include "parameters.h"
 #include "reference/collision_ode.h"
 #include "reference/linear_dashpot.h"
+#include "reference/rayleigh_vibration.h"
 #include "reference/schwager_disk.h"
 #include "reference/viscoelastic_spheres.h"
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -42,6 +44,37 @@ namespace DiskImpact
         M_PI, v, Reference::disk_force_law(1., 1., constant), alpha, end);
     }
 
+    /// The (2,0) mode's share of Rayleigh's first-order vibration.
+    double
+    quadrupole_fraction(const Reference::RayleighVibration &vibration)
+    {
+      for (const auto &mode : vibration.modes)
+        if (mode.label.n == 2 && mode.label.l == 0 &&
+            mode.label.family == Reference::ModeFamily::mixed)
+          return mode.energy_fraction;
+      return 0.;
+    }
+
+    /// Rayleigh's model with feedback; NaN where the modes' quasistatic
+    /// compliance exceeds the log law's at the collision's force (more
+    /// modes than the contact width allows).
+    Reference::RayleighImpact
+    rayleigh_feedback(const double                                     v,
+                      const double                                     C,
+                      const double                                     nu2,
+                      const std::vector<Reference::FreeDiskModeShape> &shapes)
+    {
+      try
+        {
+          return Reference::rayleigh_impact(v, C, nu2, shapes);
+        }
+      catch (const Reference::TooManyModes &)
+        {
+          const double nan = std::nan("");
+          return {nan, nan, nan, nan, nan, nan};
+        }
+    }
+
     /// @p formula(v_s) where the scaled velocity v_s is below the largest
     /// the log law allows (seed 000, eq. 50); NaN beyond.
     template <typename Formula>
@@ -60,15 +93,19 @@ namespace DiskImpact
     prm.enter_subsection("Reference models");
     prm.declare_entry("Model",
                       "disk",
-                      Patterns::Selection("disk|dashpot|spheres"),
+                      Patterns::Selection("disk|dashpot|spheres|rayleigh"),
                       "Task 'reference models': 'disk' (log law with "
                       "Kelvin-Voigt dissipation, seed 000), 'dashpot' (linear "
-                      "spring and dashpot, seed 002) or 'spheres' "
-                      "(viscoelastic Hertz spheres, seed 003).");
+                      "spring and dashpot, seed 002), 'spheres' "
+                      "(viscoelastic Hertz spheres, seed 003) or 'rayleigh' "
+                      "(vibration left in the free-disk modes by the "
+                      "quasistatic collision of an elastic disk, seed 001, "
+                      "eqs. 62-68).");
     prm.declare_entry("Velocities",
                       "0.001, 0.002, 0.005, 0.01, 0.02, 0.05, 0.1",
                       Patterns::List(Patterns::Double(0.), 1),
-                      "Model 'disk': impact speeds v / c [-].");
+                      "Models 'disk' and 'rayleigh': impact speeds v / c "
+                      "[-].");
     prm.declare_entry("Alphas",
                       "0.02, 0.05, 0.1",
                       Patterns::List(Patterns::Double(0.), 1),
@@ -82,6 +119,11 @@ namespace DiskImpact
                       "1e-8, 1e-6, 1e-5, 1e-4, 1e-3, 1e-2, 0.1, 1, 10, 100",
                       Patterns::List(Patterns::Double(0.), 1),
                       "Model 'spheres': g / g* (seed 003, eq. 30) [-].");
+    prm.declare_entry("Mode counts",
+                      "200, 400, 800, 1600",
+                      Patterns::List(Patterns::Integer(1), 1),
+                      "Model 'rayleigh': numbers N of the lowest free-disk "
+                      "modes symmetric about the impact axis [-].");
     prm.leave_subsection();
   }
 
@@ -92,12 +134,17 @@ namespace DiskImpact
     const std::map<std::string, ReferenceModel> models{
       {"disk", ReferenceModel::disk},
       {"dashpot", ReferenceModel::dashpot},
-      {"spheres", ReferenceModel::spheres}};
+      {"spheres", ReferenceModel::spheres},
+      {"rayleigh", ReferenceModel::rayleigh}};
     model           = models.at(prm.get("Model"));
     velocities      = get_double_list(prm, "Velocities");
     alphas          = get_double_list(prm, "Alphas");
     damping_ratios  = get_double_list(prm, "Damping ratios");
     velocity_ratios = get_double_list(prm, "Velocity ratios");
+    mode_counts.clear();
+    for (const int n : Utilities::string_to_int(
+           Utilities::split_string_list(prm.get("Mode counts"), ',')))
+      mode_counts.push_back(n);
     prm.leave_subsection();
     auto positive = [](const double x) { return x > 0.; };
     for (const auto &[entry, values] :
@@ -108,6 +155,18 @@ namespace DiskImpact
                    positive,
                    std::string("Reference models: every entry of '") + entry +
                      "' must be positive");
+  }
+
+  void
+  ReferenceModels::check_velocities(const double law_constant) const
+  {
+    if (model != ReferenceModel::rayleigh)
+      return;
+    for (const double v : velocities)
+      require(Reference::schwager_scaled_velocity(v, law_constant) <
+                Reference::schwager_maximum_scaled_velocity(),
+              "Reference models: v/c = " + std::to_string(v) +
+                " is too fast for the log law (seed 000, eq. 50)");
   }
 
   void
@@ -127,6 +186,9 @@ namespace DiskImpact
           break;
         case ReferenceModel::spheres:
           tabulate_spheres(directory + "reference_spheres.csv");
+          break;
+        case ReferenceModel::rayleigh:
+          tabulate_rayleigh(parameters, directory + "reference_rayleigh.csv");
           break;
       }
   }
@@ -268,6 +330,77 @@ namespace DiskImpact
           std::cout << std::setw(14) << row[k];
         std::cout << '\n';
       }
+    table.write(filename);
+  }
+
+  void
+  ReferenceModels::tabulate_rayleigh(const Parameters  &parameters,
+                                     const std::string &filename) const
+  {
+    const double       nu2 = parameters.material.in_plane_poisson_ratio();
+    const double       C   = parameters.impact.contact_law_constant_value(nu2);
+    const unsigned int largest =
+      *std::max_element(mode_counts.begin(), mode_counts.end());
+    std::cout << "Rayleigh: vibration left by the collision, log law with C = "
+              << C << " (nu2 = " << nu2 << "), up to " << largest << " modes\n"
+              << "  first order: the 1-DOF force on the modes (seed 001, eqs. "
+                 "62-68); feedback: the\n  contact force also feels the "
+                 "modes' dynamic displacement ('-': too many modes for\n  the "
+                 "contact width)\n"
+              << "    v/c       N   1-DOF t_c  vibration  (2,0) share   epsilon"
+                 " | feedback: t_c    delta_max     epsilon  energy error\n";
+    const auto all_shapes = Reference::symmetric_mode_shapes(nu2, largest);
+    CsvTable   table({"velocity",
+                      "modes",
+                      "contact_time",
+                      "delta_max",
+                      "vibration_fraction",
+                      "quadrupole_fraction",
+                      "epsilon",
+                      "contact_time_feedback",
+                      "delta_max_feedback",
+                      "vibration_fraction_feedback",
+                      "epsilon_feedback",
+                      "energy_error_feedback"});
+    for (const double v : velocities)
+      for (const unsigned int n : mode_counts)
+        {
+          const std::vector<Reference::FreeDiskModeShape> shapes(
+            all_shapes.begin(), all_shapes.begin() + n);
+          const auto first   = Reference::rayleigh_vibration(v, C, nu2, shapes);
+          const auto coupled = rayleigh_feedback(v, C, nu2, shapes);
+          const std::vector<double> row{v,
+                                        double(n),
+                                        first.contact_time,
+                                        first.max_compression,
+                                        first.vibration_fraction,
+                                        quadrupole_fraction(first),
+                                        first.epsilon(),
+                                        coupled.contact_time,
+                                        coupled.max_compression,
+                                        coupled.vibration_fraction,
+                                        coupled.epsilon,
+                                        coupled.energy_error};
+          table.start_row();
+          for (const double value : row)
+            table.add(value);
+          std::cout << std::scientific << std::setprecision(1) << std::setw(8)
+                    << v << std::setw(6) << n << std::fixed
+                    << std::setprecision(5) << std::setw(11) << row[2]
+                    << std::scientific << std::setprecision(3) << std::setw(11)
+                    << row[4] << std::setw(11) << row[5] << std::fixed
+                    << std::setprecision(6) << std::setw(11) << row[6] << " | ";
+          if (std::isnan(coupled.epsilon))
+            std::cout << std::setw(13) << '-';
+          else
+            std::cout << std::setprecision(5) << std::setw(13) << row[7]
+                      << std::scientific << std::setprecision(5)
+                      << std::setw(13) << row[8] << std::fixed
+                      << std::setprecision(6) << std::setw(12) << row[10]
+                      << std::scientific << std::setprecision(1)
+                      << std::setw(10) << row[11];
+          std::cout << std::endl;
+        }
     table.write(filename);
   }
 } // namespace DiskImpact

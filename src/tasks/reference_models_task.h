@@ -16,7 +16,8 @@ namespace DiskImpact
   {
     disk,    ///< log law with Kelvin-Voigt dissipation (seed 000)
     dashpot, ///< linear spring and dashpot (seed 002)
-    spheres  ///< viscoelastic Hertz spheres (seed 003)
+    spheres, ///< viscoelastic Hertz spheres (seed 003)
+    rayleigh ///< vibration left by the quasistatic collision (seed 001, §5)
   };
 
   /**
@@ -30,7 +31,11 @@ namespace DiskImpact
    * - dashpot: for every beta / omega0 of 'Damping ratios', eq. 21 of seed
    *   002 (corrected), the ODE, and the naive overlap criterion;
    * - spheres: for every g / g* of 'Velocity ratios', the ODE, the series
-   *   eq. 32 and the Pade approximant eq. 35 of seed 003.
+   *   eq. 32 and the Pade approximant eq. 35 of seed 003;
+   * - rayleigh: for every v/c of 'Velocities' and N of 'Mode counts', the
+   *   energy the quasistatic 1-DOF force leaves in the N lowest free-disk
+   *   modes (seed 001, eqs. 62-68) and the epsilon it implies, the v -> 0
+   *   limit of the elastic FE impact.
    */
   class ReferenceModels
   {
@@ -40,16 +45,22 @@ namespace DiskImpact
     void
     parse_parameters(dealii::ParameterHandler &prm);
 
+    /// Model 'rayleigh' needs speeds the log law with @p law_constant can
+    /// stop (seed 000, eq. 50); an input error otherwise.
+    void
+    check_velocities(double law_constant) const;
+
     /// Tabulate the chosen model (rank 0 writes the file).
     void
     run(const Parameters &parameters, MPI_Comm communicator) const;
 
   private:
-    ReferenceModel      model = ReferenceModel::disk;
-    std::vector<double> velocities;
-    std::vector<double> alphas;
-    std::vector<double> damping_ratios;
-    std::vector<double> velocity_ratios;
+    ReferenceModel            model = ReferenceModel::disk;
+    std::vector<double>       velocities;
+    std::vector<double>       alphas;
+    std::vector<double>       damping_ratios;
+    std::vector<double>       velocity_ratios;
+    std::vector<unsigned int> mode_counts;
 
     void
     tabulate_disk(const Parameters  &parameters,
@@ -58,5 +69,8 @@ namespace DiskImpact
     tabulate_dashpot(const std::string &filename) const;
     void
     tabulate_spheres(const std::string &filename) const;
+    void
+    tabulate_rayleigh(const Parameters  &parameters,
+                      const std::string &filename) const;
   };
 } // namespace DiskImpact
