@@ -16,4 +16,16 @@ namespace DiskImpact
     return dealii::Utilities::string_to_double(
       dealii::Utilities::split_string_list(prm.get(entry), ','));
   }
+
+  /// The counts of the comma-separated list entry @p entry of the current
+  /// subsection (declared with Patterns::List(Patterns::Integer(1))).
+  inline std::vector<unsigned int>
+  get_count_list(const dealii::ParameterHandler &prm, const std::string &entry)
+  {
+    std::vector<unsigned int> counts;
+    for (const int n : dealii::Utilities::string_to_int(
+           dealii::Utilities::split_string_list(prm.get(entry), ',')))
+      counts.push_back(n);
+    return counts;
+  }
 } // namespace DiskImpact

@@ -224,12 +224,10 @@ namespace DiskImpact
   ModalExpansionStudy::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Modal expansion");
-    velocities     = get_double_list(prm, "Velocities");
-    alphas         = get_double_list(prm, "Potential stiffnesses");
-    poisson_ratios = get_double_list(prm, "Poisson ratios");
-    for (const int n : Utilities::string_to_int(
-           Utilities::split_string_list(prm.get("Mode counts"), ',')))
-      mode_counts.push_back(n);
+    velocities       = get_double_list(prm, "Velocities");
+    alphas           = get_double_list(prm, "Potential stiffnesses");
+    poisson_ratios   = get_double_list(prm, "Poisson ratios");
+    mode_counts      = get_count_list(prm, "Mode counts");
     angular_points   = prm.get_integer("Angular points");
     steps_per_period = prm.get_double("Steps per period");
     integrator       = prm.get("Integrator") == "splitting" ?

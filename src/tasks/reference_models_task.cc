@@ -120,7 +120,7 @@ namespace DiskImpact
                       Patterns::List(Patterns::Double(0.), 1),
                       "Model 'spheres': g / g* (seed 003, eq. 30) [-].");
     prm.declare_entry("Mode counts",
-                      "200, 400, 800, 1600",
+                      "10, 25, 50, 100, 200",
                       Patterns::List(Patterns::Integer(1), 1),
                       "Model 'rayleigh': numbers N of the lowest free-disk "
                       "modes symmetric about the impact axis [-].");
@@ -141,10 +141,7 @@ namespace DiskImpact
     alphas          = get_double_list(prm, "Alphas");
     damping_ratios  = get_double_list(prm, "Damping ratios");
     velocity_ratios = get_double_list(prm, "Velocity ratios");
-    mode_counts.clear();
-    for (const int n : Utilities::string_to_int(
-           Utilities::split_string_list(prm.get("Mode counts"), ',')))
-      mode_counts.push_back(n);
+    mode_counts     = get_count_list(prm, "Mode counts");
     prm.leave_subsection();
     auto positive = [](const double x) { return x > 0.; };
     for (const auto &[entry, values] :
