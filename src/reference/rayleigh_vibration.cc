@@ -162,12 +162,6 @@ namespace DiskImpact
                          std::exp(constant - 1. - M_PI * compliance);
         }
 
-        double
-        mode_compliance() const
-        {
-          return compliance;
-        }
-
         /// The local compression delta + sum C Q.
         double
         compression(const CoupledState &state) const
@@ -288,7 +282,6 @@ namespace DiskImpact
       state[1] = velocity;
       boost::numeric::odeint::runge_kutta4<CoupledState> stepper;
       RayleighImpact                                     result;
-      result.mode_compliance = contact.mode_compliance();
       double t = 0., end = 0., previous_y = 0.;
       bool   touched = false;
       while (!(end > 0.) || t < 1.2 * end)

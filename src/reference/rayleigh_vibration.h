@@ -71,7 +71,6 @@ namespace DiskImpact
       double max_compression    = 0.; ///< largest approach of the centre
       double vibration_fraction = 0.; ///< mode energy after / (m v^2 / 2)
       double energy_error       = 0.; ///< |energy drift| / (m v^2 / 2)
-      double mode_compliance    = 0.; ///< S_N = sum C^2 / (m omega^2)
     };
 
     /**

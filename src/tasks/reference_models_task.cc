@@ -71,7 +71,7 @@ namespace DiskImpact
       catch (const Reference::TooManyModes &)
         {
           const double nan = std::nan("");
-          return {nan, nan, nan, nan, nan, nan};
+          return {nan, nan, nan, nan, nan};
         }
     }
 
