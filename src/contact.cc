@@ -1,7 +1,7 @@
 #include "contact.h"
 
 #include "geometry.h"
-#include "input_error.h"
+#include "base/input_error.h"
 
 #include <deal.II/base/patterns.h>
 #include <deal.II/base/utilities.h>

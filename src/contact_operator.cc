@@ -2,7 +2,7 @@
 
 #include "elasticity_operator.h"
 #include "geometry.h"
-#include "petsc_check.h"
+#include "base/petsc_check.h"
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>

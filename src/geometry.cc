@@ -1,6 +1,6 @@
 #include "geometry.h"
 
-#include "input_error.h"
+#include "base/input_error.h"
 
 #include <deal.II/base/mpi.h>
 

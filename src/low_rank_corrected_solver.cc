@@ -1,6 +1,6 @@
 #include "low_rank_corrected_solver.h"
 
-#include "petsc_check.h"
+#include "base/petsc_check.h"
 
 #include <deal.II/base/mpi.h>
 

@@ -1,8 +1,8 @@
 // diskimpact: finite-element analysis of an elastic or viscoelastic disk
 // and its impact on a rigid wall. See README.md.
 
-#include "input_error.h"
-#include "parameters.h"
+#include "base/input_error.h"
+#include "base/parameters.h"
 #include "tasks/task_runner.h"
 
 #include <deal.II/base/exceptions.h>

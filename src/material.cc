@@ -1,6 +1,6 @@
 #include "material.h"
 
-#include "input_error.h"
+#include "base/input_error.h"
 
 #include <cmath>
 #include <sstream>

@@ -1,7 +1,7 @@
 #include "modal_solver.h"
 
 #include "elasticity_operator.h"
-#include "petsc_check.h"
+#include "base/petsc_check.h"
 
 #include <slepceps.h>
 

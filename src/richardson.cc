@@ -1,6 +1,6 @@
 #include "richardson.h"
 
-#include "input_error.h"
+#include "base/input_error.h"
 
 #include <algorithm>
 #include <cmath>

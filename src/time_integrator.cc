@@ -1,6 +1,6 @@
 #include "time_integrator.h"
 
-#include "input_error.h"
+#include "base/input_error.h"
 
 namespace DiskImpact
 {

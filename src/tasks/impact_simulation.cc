@@ -1,7 +1,7 @@
 #include "tasks/impact_simulation.h"
 
 #include "hdf5_output.h"
-#include "parameters.h"
+#include "base/parameters.h"
 #include "reference/collision_ode.h"
 #include "reference/log_contact_law.h"
 #include "reference/one_dof_impact.h"

@@ -1,6 +1,6 @@
 #include "tasks/impact_task.h"
 
-#include "parameters.h"
+#include "base/parameters.h"
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/utilities.h>

@@ -2,7 +2,7 @@
 
 #include "csv_table.h"
 #include "modal_analysis.h"
-#include "parameters.h"
+#include "base/parameters.h"
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>

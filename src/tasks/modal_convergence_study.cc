@@ -1,9 +1,9 @@
 #include "tasks/modal_convergence_study.h"
 
 #include "csv_table.h"
-#include "input_error.h"
+#include "base/input_error.h"
 #include "modal_analysis.h"
-#include "parameters.h"
+#include "base/parameters.h"
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>

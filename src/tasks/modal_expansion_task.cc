@@ -1,9 +1,9 @@
 #include "tasks/modal_expansion_task.h"
 
 #include "csv_table.h"
-#include "input_error.h"
-#include "parameter_lists.h"
-#include "parameters.h"
+#include "base/input_error.h"
+#include "base/parameter_lists.h"
+#include "base/parameters.h"
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>

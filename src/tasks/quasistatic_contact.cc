@@ -3,9 +3,9 @@
 #include "contact_operator.h"
 #include "csv_table.h"
 #include "elasticity_operator.h"
-#include "input_error.h"
-#include "parameter_lists.h"
-#include "parameters.h"
+#include "base/input_error.h"
+#include "base/parameter_lists.h"
+#include "base/parameters.h"
 #include "reference/log_contact_law.h"
 #include "state_output.h"
 

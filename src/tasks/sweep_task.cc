@@ -2,7 +2,7 @@
 
 #include "csv_table.h"
 #include "hdf5_output.h"
-#include "parameters.h"
+#include "base/parameters.h"
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>

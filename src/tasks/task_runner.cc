@@ -1,6 +1,6 @@
 #include "tasks/task_runner.h"
 
-#include "parameters.h"
+#include "base/parameters.h"
 #include "tasks/impact_convergence_study.h"
 #include "tasks/impact_task.h"
 #include "tasks/modal_analysis_task.h"

@@ -1,7 +1,7 @@
 // Material tensors: plane strain and plane stress against independent
 // formulas, and the in-plane mapping of seed 001, eq. 2.
 
-#include "input_error.h"
+#include "base/input_error.h"
 #include "material.h"
 
 #include <deal.II/base/symmetric_tensor.h>

@@ -1,6 +1,6 @@
-#include "parameters.h"
+#include "base/parameters.h"
 
-#include "input_error.h"
+#include "base/input_error.h"
 
 #include <filesystem>
 #include <regex>

@@ -1,6 +1,6 @@
-#include "run_parameters.h"
+#include "base/run_parameters.h"
 
-#include "input_error.h"
+#include "base/input_error.h"
 
 #include <map>
 

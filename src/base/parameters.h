@@ -5,7 +5,7 @@
 #include "geometry.h"
 #include "material.h"
 #include "modal_solver.h"
-#include "run_parameters.h"
+#include "base/run_parameters.h"
 #include "tasks/impact.h"
 #include "tasks/impact_convergence_study.h"
 #include "tasks/modal_convergence_study.h"
