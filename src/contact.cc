@@ -1,6 +1,6 @@
 #include "contact.h"
 
-#include "geometry.h"
+#include "body/geometry.h"
 #include "base/input_error.h"
 
 #include <deal.II/base/patterns.h>

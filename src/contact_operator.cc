@@ -1,7 +1,7 @@
 #include "contact_operator.h"
 
 #include "elasticity_operator.h"
-#include "geometry.h"
+#include "body/geometry.h"
 #include "base/petsc_check.h"
 
 #include <deal.II/base/mpi.h>

@@ -1,6 +1,6 @@
 #include "elasticity_operator.h"
 
-#include "geometry.h"
+#include "body/geometry.h"
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "elasticity_operator.h"
-#include "geometry.h"
+#include "body/geometry.h"
 #include "material.h"
 #include "modal_solver.h"
 #include "mode_labelling.h"

@@ -2,7 +2,7 @@
 
 #include "csv_table.h"
 #include "elasticity_operator.h"
-#include "geometry.h"
+#include "body/geometry.h"
 
 #include <algorithm>
 #include <numeric>

@@ -1,7 +1,7 @@
 #include "mode_labelling.h"
 
 #include "elasticity_operator.h"
-#include "geometry.h"
+#include "body/geometry.h"
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>

@@ -2,7 +2,7 @@
 
 #include "contact.h"
 #include "elasticity_operator.h"
-#include "geometry.h"
+#include "body/geometry.h"
 #include "material.h"
 #include "modal_solver.h"
 #include "base/run_parameters.h"

@@ -5,7 +5,7 @@
 #include "contact.h"
 #include "contact_operator.h"
 #include "elasticity_operator.h"
-#include "geometry.h"
+#include "body/geometry.h"
 #include "reference/log_contact_law.h"
 
 #include <deal.II/base/function_parser.h>

@@ -3,7 +3,7 @@
 // an independent ODE integration.
 
 #include "elasticity_operator.h"
-#include "geometry.h"
+#include "body/geometry.h"
 #include "low_rank_corrected_solver.h"
 #include "material.h"
 #include "reference/log_contact_law.h"

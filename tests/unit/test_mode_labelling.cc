@@ -2,7 +2,7 @@
 // boundary harmonic analysis on interpolated analytic fields.
 
 #include "elasticity_operator.h"
-#include "geometry.h"
+#include "body/geometry.h"
 #include "mode_labelling.h"
 
 #include <deal.II/base/function.h>

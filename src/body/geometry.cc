@@ -1,4 +1,4 @@
-#include "geometry.h"
+#include "body/geometry.h"
 
 #include "base/input_error.h"
 
