@@ -1,6 +1,6 @@
 #include "contact_operator.h"
 
-#include "elasticity_operator.h"
+#include "elasticity/elasticity_operator.h"
 #include "body/geometry.h"
 #include "base/petsc_check.h"
 

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "elasticity_operator.h"
+#include "elasticity/elasticity_operator.h"
 #include "body/geometry.h"
-#include "material.h"
+#include "elasticity/material.h"
 #include "modal_solver.h"
 #include "mode_labelling.h"
 

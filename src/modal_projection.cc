@@ -1,7 +1,7 @@
 #include "modal_projection.h"
 
 #include "csv_table.h"
-#include "elasticity_operator.h"
+#include "elasticity/elasticity_operator.h"
 #include "body/geometry.h"
 
 #include <algorithm>

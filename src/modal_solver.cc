@@ -1,6 +1,6 @@
 #include "modal_solver.h"
 
-#include "elasticity_operator.h"
+#include "elasticity/elasticity_operator.h"
 #include "base/petsc_check.h"
 
 #include <slepceps.h>

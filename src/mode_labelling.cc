@@ -1,6 +1,6 @@
 #include "mode_labelling.h"
 
-#include "elasticity_operator.h"
+#include "elasticity/elasticity_operator.h"
 #include "body/geometry.h"
 
 #include <deal.II/base/mpi.h>

@@ -1,8 +1,8 @@
 #include "state_output.h"
 
-#include "elasticity_operator.h"
-#include "material.h"
-#include "stress_postprocessor.h"
+#include "elasticity/elasticity_operator.h"
+#include "elasticity/material.h"
+#include "elasticity/stress_postprocessor.h"
 
 #include <deal.II/numerics/data_out.h>
 

@@ -1,9 +1,9 @@
 #pragma once
 
 #include "contact.h"
-#include "elasticity_operator.h"
+#include "elasticity/elasticity_operator.h"
 #include "body/geometry.h"
-#include "material.h"
+#include "elasticity/material.h"
 #include "modal_solver.h"
 #include "base/run_parameters.h"
 #include "tasks/impact.h"

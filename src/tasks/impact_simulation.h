@@ -2,7 +2,7 @@
 
 #include "contact_operator.h"
 #include "csv_table.h"
-#include "elasticity_operator.h"
+#include "elasticity/elasticity_operator.h"
 #include "low_rank_corrected_solver.h"
 #include "modal_projection.h"
 #include "tasks/impact.h"

@@ -2,7 +2,7 @@
 
 #include "contact_operator.h"
 #include "csv_table.h"
-#include "elasticity_operator.h"
+#include "elasticity/elasticity_operator.h"
 #include "base/input_error.h"
 #include "base/parameter_lists.h"
 #include "base/parameters.h"

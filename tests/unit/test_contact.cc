@@ -4,7 +4,7 @@
 
 #include "contact.h"
 #include "contact_operator.h"
-#include "elasticity_operator.h"
+#include "elasticity/elasticity_operator.h"
 #include "body/geometry.h"
 #include "reference/log_contact_law.h"
 

@@ -1,4 +1,4 @@
-#include "material.h"
+#include "elasticity/material.h"
 
 #include <deal.II/base/symmetric_tensor.h>
 

@@ -2,10 +2,10 @@
 // residual of the corrected system, and the 1-DOF log-law collision against
 // an independent ODE integration.
 
-#include "elasticity_operator.h"
+#include "elasticity/elasticity_operator.h"
 #include "body/geometry.h"
 #include "low_rank_corrected_solver.h"
-#include "material.h"
+#include "elasticity/material.h"
 #include "reference/log_contact_law.h"
 #include "reference/one_dof_impact.h"
 

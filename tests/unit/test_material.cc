@@ -2,7 +2,7 @@
 // formulas, and the in-plane mapping of seed 001, eq. 2.
 
 #include "base/input_error.h"
-#include "material.h"
+#include "elasticity/material.h"
 
 #include <deal.II/base/symmetric_tensor.h>
 

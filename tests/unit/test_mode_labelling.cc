@@ -1,7 +1,7 @@
 // Mode labelling: the counting rules on synthetic harmonic content, and the
 // boundary harmonic analysis on interpolated analytic fields.
 
-#include "elasticity_operator.h"
+#include "elasticity/elasticity_operator.h"
 #include "body/geometry.h"
 #include "mode_labelling.h"
 

@@ -1,4 +1,4 @@
-#include "stress_postprocessor.h"
+#include "elasticity/stress_postprocessor.h"
 
 namespace DiskImpact
 {

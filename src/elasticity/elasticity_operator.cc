@@ -1,4 +1,4 @@
-#include "elasticity_operator.h"
+#include "elasticity/elasticity_operator.h"
 
 #include "body/geometry.h"
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "material.h"
+#include "elasticity/material.h"
 
 #include <deal.II/numerics/data_postprocessor.h>
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "material.h"
+#include "elasticity/material.h"
 
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/parameter_handler.h>

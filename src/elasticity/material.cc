@@ -1,4 +1,4 @@
-#include "material.h"
+#include "elasticity/material.h"
 
 #include "base/input_error.h"
 
