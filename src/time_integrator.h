@@ -1,6 +1,6 @@
 #pragma once
 
-#include "contact_operator.h"
+#include "contact/contact_operator.h"
 
 #include <deal.II/base/parameter_handler.h>
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "contact.h"
+#include "contact/contact.h"
 #include "elasticity/elasticity_operator.h"
 #include "body/geometry.h"
 #include "elasticity/material.h"

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "contact_operator.h"
+#include "contact/contact_operator.h"
 #include "csv_table.h"
 #include "elasticity/elasticity_operator.h"
 #include "low_rank_corrected_solver.h"

@@ -1,6 +1,6 @@
 #include "tasks/quasistatic_contact.h"
 
-#include "contact_operator.h"
+#include "contact/contact_operator.h"
 #include "csv_table.h"
 #include "elasticity/elasticity_operator.h"
 #include "base/input_error.h"

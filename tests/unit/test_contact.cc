@@ -2,8 +2,8 @@
 // tangent against finite differences of its residual, and the log contact law
 // with its Lambert-W inverse.
 
-#include "contact.h"
-#include "contact_operator.h"
+#include "contact/contact.h"
+#include "contact/contact_operator.h"
 #include "elasticity/elasticity_operator.h"
 #include "body/geometry.h"
 #include "reference/log_contact_law.h"

@@ -1,4 +1,4 @@
-#include "contact_operator.h"
+#include "contact/contact_operator.h"
 
 #include "elasticity/elasticity_operator.h"
 #include "body/geometry.h"

@@ -1,4 +1,4 @@
-#include "contact.h"
+#include "contact/contact.h"
 
 #include "body/geometry.h"
 #include "base/input_error.h"

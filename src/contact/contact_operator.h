@@ -1,6 +1,6 @@
 #pragma once
 
-#include "contact.h"
+#include "contact/contact.h"
 
 #include <deal.II/lac/petsc_sparse_matrix.h>
 #include <deal.II/lac/petsc_vector.h>
