@@ -12,7 +12,7 @@
 #include "tasks/modal_expansion_task.h"
 #include "tasks/quasistatic_contact.h"
 #include "tasks/reference_models_task.h"
-#include "time_integrator.h"
+#include "dynamics/time_integrator.h"
 
 #include <deal.II/base/parameter_handler.h>
 

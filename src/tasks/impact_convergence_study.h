@@ -1,6 +1,6 @@
 #pragma once
 
-#include "richardson.h"
+#include "dynamics/richardson.h"
 #include "tasks/impact.h"
 
 #include <deal.II/base/parameter_handler.h>

@@ -3,7 +3,7 @@
 #include "contact/contact_operator.h"
 #include "csv_table.h"
 #include "elasticity/elasticity_operator.h"
-#include "low_rank_corrected_solver.h"
+#include "dynamics/low_rank_corrected_solver.h"
 #include "modal_projection.h"
 #include "tasks/impact.h"
 

@@ -4,7 +4,7 @@
 
 #include "elasticity/elasticity_operator.h"
 #include "body/geometry.h"
-#include "low_rank_corrected_solver.h"
+#include "dynamics/low_rank_corrected_solver.h"
 #include "elasticity/material.h"
 #include "reference/log_contact_law.h"
 #include "reference/one_dof_impact.h"

@@ -1,4 +1,4 @@
-#include "richardson.h"
+#include "dynamics/richardson.h"
 
 #include <catch2/catch.hpp>
 

@@ -1,4 +1,4 @@
-#include "richardson.h"
+#include "dynamics/richardson.h"
 
 #include "base/input_error.h"
 

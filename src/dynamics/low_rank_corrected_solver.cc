@@ -1,4 +1,4 @@
-#include "low_rank_corrected_solver.h"
+#include "dynamics/low_rank_corrected_solver.h"
 
 #include "base/petsc_check.h"
 

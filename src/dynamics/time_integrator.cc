@@ -1,4 +1,4 @@
-#include "time_integrator.h"
+#include "dynamics/time_integrator.h"
 
 #include "base/input_error.h"
 
