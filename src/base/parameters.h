@@ -4,7 +4,7 @@
 #include "elasticity/elasticity_operator.h"
 #include "body/geometry.h"
 #include "elasticity/material.h"
-#include "modal_solver.h"
+#include "modal/modal_solver.h"
 #include "base/run_parameters.h"
 #include "tasks/impact.h"
 #include "tasks/impact_convergence_study.h"

@@ -4,7 +4,7 @@
 #include "csv_table.h"
 #include "elasticity/elasticity_operator.h"
 #include "dynamics/low_rank_corrected_solver.h"
-#include "modal_projection.h"
+#include "modal/modal_projection.h"
 #include "tasks/impact.h"
 
 #include <deal.II/distributed/tria.h>

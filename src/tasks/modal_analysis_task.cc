@@ -1,7 +1,7 @@
 #include "tasks/modal_analysis_task.h"
 
 #include "csv_table.h"
-#include "modal_analysis.h"
+#include "modal/modal_analysis.h"
 #include "base/parameters.h"
 
 #include <deal.II/base/conditional_ostream.h>

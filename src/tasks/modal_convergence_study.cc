@@ -2,7 +2,7 @@
 
 #include "csv_table.h"
 #include "base/input_error.h"
-#include "modal_analysis.h"
+#include "modal/modal_analysis.h"
 #include "base/parameters.h"
 
 #include <deal.II/base/conditional_ostream.h>

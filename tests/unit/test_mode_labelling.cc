@@ -3,7 +3,7 @@
 
 #include "elasticity/elasticity_operator.h"
 #include "body/geometry.h"
-#include "mode_labelling.h"
+#include "modal/mode_labelling.h"
 
 #include <deal.II/base/function.h>
 #include <deal.II/base/parameter_handler.h>

@@ -1,4 +1,4 @@
-#include "mode_labelling.h"
+#include "modal/mode_labelling.h"
 
 #include "elasticity/elasticity_operator.h"
 #include "body/geometry.h"

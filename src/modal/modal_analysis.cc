@@ -1,4 +1,4 @@
-#include "modal_analysis.h"
+#include "modal/modal_analysis.h"
 
 #include "csv_table.h"
 

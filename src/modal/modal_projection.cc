@@ -1,4 +1,4 @@
-#include "modal_projection.h"
+#include "modal/modal_projection.h"
 
 #include "csv_table.h"
 #include "elasticity/elasticity_operator.h"

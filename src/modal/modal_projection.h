@@ -1,7 +1,7 @@
 #pragma once
 
-#include "modal_solver.h"
-#include "mode_labelling.h"
+#include "modal/modal_solver.h"
+#include "modal/mode_labelling.h"
 
 #include <deal.II/lac/petsc_vector.h>
 

@@ -1,4 +1,4 @@
-#include "modal_solver.h"
+#include "modal/modal_solver.h"
 
 #include "elasticity/elasticity_operator.h"
 #include "base/petsc_check.h"

@@ -3,8 +3,8 @@
 #include "elasticity/elasticity_operator.h"
 #include "body/geometry.h"
 #include "elasticity/material.h"
-#include "modal_solver.h"
-#include "mode_labelling.h"
+#include "modal/modal_solver.h"
+#include "modal/mode_labelling.h"
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
