@@ -1,6 +1,6 @@
 #include "modal/modal_analysis.h"
 
-#include "csv_table.h"
+#include "output/csv_table.h"
 
 #include <deal.II/base/utilities.h>
 

@@ -1,6 +1,6 @@
 #include "modal/modal_projection.h"
 
-#include "csv_table.h"
+#include "output/csv_table.h"
 #include "elasticity/elasticity_operator.h"
 #include "body/geometry.h"
 

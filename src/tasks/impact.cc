@@ -1,6 +1,6 @@
 #include "tasks/impact.h"
 
-#include "csv_table.h"
+#include "output/csv_table.h"
 #include "base/input_error.h"
 #include "base/parameter_lists.h"
 #include "tasks/impact_simulation.h"

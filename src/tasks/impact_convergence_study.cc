@@ -1,6 +1,6 @@
 #include "tasks/impact_convergence_study.h"
 
-#include "csv_table.h"
+#include "output/csv_table.h"
 #include "base/parameters.h"
 
 #include <deal.II/base/conditional_ostream.h>

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "contact/contact_operator.h"
-#include "csv_table.h"
+#include "output/csv_table.h"
 #include "elasticity/elasticity_operator.h"
 #include "dynamics/low_rank_corrected_solver.h"
 #include "modal/modal_projection.h"

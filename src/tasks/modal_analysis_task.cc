@@ -1,6 +1,6 @@
 #include "tasks/modal_analysis_task.h"
 
-#include "csv_table.h"
+#include "output/csv_table.h"
 #include "modal/modal_analysis.h"
 #include "base/parameters.h"
 

@@ -1,6 +1,6 @@
 #include "tasks/modal_convergence_study.h"
 
-#include "csv_table.h"
+#include "output/csv_table.h"
 #include "base/input_error.h"
 #include "modal/modal_analysis.h"
 #include "base/parameters.h"

@@ -1,6 +1,6 @@
 #include "tasks/reference_models_task.h"
 
-#include "csv_table.h"
+#include "output/csv_table.h"
 #include "base/input_error.h"
 #include "base/parameter_lists.h"
 #include "base/parameters.h"

@@ -1,7 +1,7 @@
 #include "tasks/sweep_task.h"
 
-#include "csv_table.h"
-#include "hdf5_output.h"
+#include "output/csv_table.h"
+#include "output/hdf5_output.h"
 #include "base/parameters.h"
 
 #include <deal.II/base/conditional_ostream.h>

@@ -1,7 +1,7 @@
 // CsvTable: columns read back as numbers, empty cells as NaN, and the
 // errors for unknown columns, text cells and incomplete rows.
 
-#include "csv_table.h"
+#include "output/csv_table.h"
 
 #include <catch2/catch.hpp>
 

@@ -2,8 +2,8 @@
 // reader, the atomic write (FILENAME appears only on finish()), and the
 // errors.
 
-#include "csv_table.h"
-#include "hdf5_output.h"
+#include "output/csv_table.h"
+#include "output/hdf5_output.h"
 
 #include <deal.II/base/hdf5.h>
 

@@ -1,4 +1,4 @@
-#include "state_output.h"
+#include "output/state_output.h"
 
 #include "elasticity/elasticity_operator.h"
 #include "elasticity/material.h"

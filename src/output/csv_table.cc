@@ -1,4 +1,4 @@
-#include "csv_table.h"
+#include "output/csv_table.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -1,6 +1,6 @@
-#include "hdf5_output.h"
+#include "output/hdf5_output.h"
 
-#include "csv_table.h"
+#include "output/csv_table.h"
 
 #include <deal.II/base/hdf5.h>
 
