@@ -1,18 +1,18 @@
 #pragma once
 
-#include "contact/contact.h"
-#include "elasticity/elasticity_operator.h"
+#include "base/run_parameters.h"
 #include "body/geometry.h"
+#include "contact/contact.h"
+#include "dynamics/time_integrator.h"
+#include "elasticity/elasticity_operator.h"
 #include "elasticity/material.h"
 #include "modal/modal_solver.h"
-#include "base/run_parameters.h"
 #include "tasks/impact.h"
 #include "tasks/impact_convergence_study.h"
 #include "tasks/modal_convergence_study.h"
 #include "tasks/modal_expansion_task.h"
 #include "tasks/quasistatic_contact.h"
 #include "tasks/reference_models_task.h"
-#include "dynamics/time_integrator.h"
 
 #include <deal.II/base/parameter_handler.h>
 

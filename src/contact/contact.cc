@@ -1,7 +1,7 @@
 #include "contact/contact.h"
 
-#include "body/geometry.h"
 #include "base/input_error.h"
+#include "body/geometry.h"
 
 #include <deal.II/base/patterns.h>
 #include <deal.II/base/utilities.h>

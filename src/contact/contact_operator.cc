@@ -1,8 +1,8 @@
 #include "contact/contact_operator.h"
 
-#include "elasticity/elasticity_operator.h"
-#include "body/geometry.h"
 #include "base/petsc_check.h"
+#include "body/geometry.h"
+#include "elasticity/elasticity_operator.h"
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>

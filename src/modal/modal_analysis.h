@@ -1,7 +1,7 @@
 #pragma once
 
-#include "elasticity/elasticity_operator.h"
 #include "body/geometry.h"
+#include "elasticity/elasticity_operator.h"
 #include "elasticity/material.h"
 #include "modal/modal_solver.h"
 #include "modal/mode_labelling.h"

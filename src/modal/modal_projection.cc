@@ -1,8 +1,8 @@
 #include "modal/modal_projection.h"
 
-#include "output/csv_table.h"
-#include "elasticity/elasticity_operator.h"
 #include "body/geometry.h"
+#include "elasticity/elasticity_operator.h"
+#include "output/csv_table.h"
 
 #include <algorithm>
 #include <numeric>

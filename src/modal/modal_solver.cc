@@ -1,7 +1,7 @@
 #include "modal/modal_solver.h"
 
-#include "elasticity/elasticity_operator.h"
 #include "base/petsc_check.h"
+#include "elasticity/elasticity_operator.h"
 
 #include <slepceps.h>
 

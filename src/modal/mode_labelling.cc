@@ -1,7 +1,7 @@
 #include "modal/mode_labelling.h"
 
-#include "elasticity/elasticity_operator.h"
 #include "body/geometry.h"
+#include "elasticity/elasticity_operator.h"
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>

@@ -1,8 +1,8 @@
 #include "tasks/impact.h"
 
-#include "output/csv_table.h"
 #include "base/input_error.h"
 #include "base/parameter_lists.h"
+#include "output/csv_table.h"
 #include "tasks/impact_simulation.h"
 
 #include <deal.II/base/utilities.h>

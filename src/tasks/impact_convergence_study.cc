@@ -1,7 +1,7 @@
 #include "tasks/impact_convergence_study.h"
 
-#include "output/csv_table.h"
 #include "base/parameters.h"
+#include "output/csv_table.h"
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/utilities.h>

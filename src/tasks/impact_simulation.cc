@@ -1,11 +1,11 @@
 #include "tasks/impact_simulation.h"
 
-#include "output/hdf5_output.h"
 #include "base/parameters.h"
+#include "output/hdf5_output.h"
+#include "output/state_output.h"
 #include "reference/collision_ode.h"
 #include "reference/log_contact_law.h"
 #include "reference/one_dof_impact.h"
-#include "output/state_output.h"
 
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/function.h>

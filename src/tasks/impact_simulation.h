@@ -1,10 +1,10 @@
 #pragma once
 
 #include "contact/contact_operator.h"
-#include "output/csv_table.h"
-#include "elasticity/elasticity_operator.h"
 #include "dynamics/low_rank_corrected_solver.h"
+#include "elasticity/elasticity_operator.h"
 #include "modal/modal_projection.h"
+#include "output/csv_table.h"
 #include "tasks/impact.h"
 
 #include <deal.II/distributed/tria.h>

@@ -1,8 +1,8 @@
 #include "tasks/modal_analysis_task.h"
 
-#include "output/csv_table.h"
-#include "modal/modal_analysis.h"
 #include "base/parameters.h"
+#include "modal/modal_analysis.h"
+#include "output/csv_table.h"
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>

@@ -1,9 +1,9 @@
 #include "tasks/modal_convergence_study.h"
 
-#include "output/csv_table.h"
 #include "base/input_error.h"
-#include "modal/modal_analysis.h"
 #include "base/parameters.h"
+#include "modal/modal_analysis.h"
+#include "output/csv_table.h"
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>

@@ -1,9 +1,9 @@
 #include "tasks/modal_expansion_task.h"
 
-#include "output/csv_table.h"
 #include "base/input_error.h"
 #include "base/parameter_lists.h"
 #include "base/parameters.h"
+#include "output/csv_table.h"
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>

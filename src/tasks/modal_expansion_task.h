@@ -1,7 +1,7 @@
 #pragma once
 
-#include "reference/modal_expansion_impact.h"
 #include "dynamics/richardson.h"
+#include "reference/modal_expansion_impact.h"
 
 #include <deal.II/base/parameter_handler.h>
 

@@ -1,13 +1,13 @@
 #include "tasks/quasistatic_contact.h"
 
-#include "contact/contact_operator.h"
-#include "output/csv_table.h"
-#include "elasticity/elasticity_operator.h"
 #include "base/input_error.h"
 #include "base/parameter_lists.h"
 #include "base/parameters.h"
-#include "reference/log_contact_law.h"
+#include "contact/contact_operator.h"
+#include "elasticity/elasticity_operator.h"
+#include "output/csv_table.h"
 #include "output/state_output.h"
+#include "reference/log_contact_law.h"
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/data_out_base.h>

@@ -1,9 +1,9 @@
 #include "tasks/reference_models_task.h"
 
-#include "output/csv_table.h"
 #include "base/input_error.h"
 #include "base/parameter_lists.h"
 #include "base/parameters.h"
+#include "output/csv_table.h"
 #include "reference/collision_ode.h"
 #include "reference/linear_dashpot.h"
 #include "reference/rayleigh_vibration.h"

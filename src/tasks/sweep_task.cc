@@ -1,8 +1,8 @@
 #include "tasks/sweep_task.h"
 
+#include "base/parameters.h"
 #include "output/csv_table.h"
 #include "output/hdf5_output.h"
-#include "base/parameters.h"
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>

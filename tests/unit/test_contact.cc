@@ -2,10 +2,10 @@
 // tangent against finite differences of its residual, and the log contact law
 // with its Lambert-W inverse.
 
+#include "body/geometry.h"
 #include "contact/contact.h"
 #include "contact/contact_operator.h"
 #include "elasticity/elasticity_operator.h"
-#include "body/geometry.h"
 #include "reference/log_contact_law.h"
 
 #include <deal.II/base/function_parser.h>

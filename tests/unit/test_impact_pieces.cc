@@ -2,9 +2,9 @@
 // residual of the corrected system, and the 1-DOF log-law collision against
 // an independent ODE integration.
 
-#include "elasticity/elasticity_operator.h"
 #include "body/geometry.h"
 #include "dynamics/low_rank_corrected_solver.h"
+#include "elasticity/elasticity_operator.h"
 #include "elasticity/material.h"
 #include "reference/log_contact_law.h"
 #include "reference/one_dof_impact.h"

@@ -1,8 +1,8 @@
 // Mode labelling: the counting rules on synthetic harmonic content, and the
 // boundary harmonic analysis on interpolated analytic fields.
 
-#include "elasticity/elasticity_operator.h"
 #include "body/geometry.h"
+#include "elasticity/elasticity_operator.h"
 #include "modal/mode_labelling.h"
 
 #include <deal.II/base/function.h>
