@@ -3,17 +3,40 @@
 
 #include "base/input_error.h"
 #include "base/parameters.h"
+#include "base/run_error.h"
 #include "tasks/task_runner.h"
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <cctype>
 #include <iostream>
+#include <new>
+#include <sstream>
 #include <string>
 
 namespace
 {
+  /// @p text with every run of white space (line breaks too) one space.
+  std::string
+  one_line(const std::string &text)
+  {
+    std::string line;
+    bool        space = false;
+    for (const char c : text)
+      if (std::isspace(static_cast<unsigned char>(c)))
+        space = !line.empty();
+      else
+        {
+          if (space)
+            line += ' ';
+          line += c;
+          space = false;
+        }
+    return line;
+  }
+
   void
   print_usage(std::ostream &out)
   {
@@ -50,7 +73,18 @@ namespace
     if (!file.empty())
       read_parameter_file(prm, file);
     Parameters parameters;
-    parameters.parse_parameters(prm);
+    try
+      {
+        parameters.parse_parameters(prm);
+      }
+    catch (const dealii::ExceptionBase &e)
+      {
+        // A value its pattern accepts but the conversion does not (e.g. a
+        // number below the smallest double).
+        std::ostringstream info;
+        e.print_info(info);
+        throw InputError("in parameter file '" + file + "': " + info.str());
+      }
 
     if (print_only)
       {
@@ -71,22 +105,25 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool                               is_root =
-    dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  const unsigned int                       rank =
+    dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
   const bool several_ranks =
     dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1;
-  // Errors are reported as one line on standard error. Input errors arise
-  // on every rank alike (rank 0 reports them); an error during a run may
-  // arise on one rank alone while the others wait for it in a collective
-  // call: that rank reports it and aborts all ranks.
-  auto report = [is_root](const std::string &kind, const std::string &what) {
-    if (is_root)
-      std::cerr << "diskimpact: " << kind << what << std::endl;
+  // Errors are reported as one line on standard error. Input errors and run
+  // errors arise on every rank alike (parsing and the checks of a run see
+  // the same data on all ranks; failures of one rank's own work are shared
+  // by share_failure()): rank 0 reports them and every rank returns 1.
+  auto report = [rank](const std::string &what) {
+    if (rank == 0)
+      std::cerr << "diskimpact: error: " << one_line(what) << std::endl;
     return 1;
   };
-  auto report_and_abort = [several_ranks](const std::string &kind,
-                                          const std::string &what) {
-    std::cerr << "diskimpact: " << kind << what << std::endl;
+  // Anything else arose on this rank alone, while the others may wait for
+  // it in a collective call: report it and end all ranks.
+  auto report_and_abort = [rank, several_ranks](const std::string &what) {
+    std::cerr << "diskimpact: error"
+              << (several_ranks ? " on MPI rank " + std::to_string(rank) : "")
+              << ": " << one_line(what) << std::endl;
     if (several_ranks)
       MPI_Abort(MPI_COMM_WORLD, 1);
     return 1;
@@ -97,16 +134,24 @@ main(int argc, char **argv)
     }
   catch (const DiskImpact::InputError &e)
     {
-      return report("error: ", e.what());
+      return report(e.what());
+    }
+  catch (const DiskImpact::RunError &e)
+    {
+      return report(e.what());
     }
   catch (const dealii::ExceptionBase &e)
     {
       std::ostringstream info;
       e.print_info(info);
-      return report_and_abort("internal error: ", info.str());
+      return report_and_abort("internal error: " + info.str());
+    }
+  catch (const std::bad_alloc &)
+    {
+      return report_and_abort("out of memory");
     }
   catch (const std::exception &e)
     {
-      return report_and_abort("error: ", e.what());
+      return report_and_abort(e.what());
     }
 }

@@ -18,6 +18,17 @@ namespace DiskImpact
     using std::runtime_error::runtime_error;
   };
 
+  /// @p value with @p digits significant digits, for messages
+  /// ("2.4e+08").
+  inline std::string
+  approximately(const double value, const int digits = 2)
+  {
+    std::ostringstream text;
+    text.precision(digits);
+    text << value;
+    return text.str();
+  }
+
   /// Throw an InputError with @p message unless @p condition holds.
   inline void
   require(const bool condition, const std::string &message)

@@ -2,7 +2,10 @@
 
 #include "base/input_error.h"
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <regex>
 #include <sstream>
 
@@ -45,7 +48,26 @@ namespace DiskImpact
     reference_models.parse_parameters(prm);
     modal_expansion.parse_parameters(prm);
 
-    // Checks across subsections.
+    // Checks across subsections. The scales of the run must be ordinary
+    // floating-point numbers, or lengths, masses and energies over- or
+    // underflow.
+    const double R  = geometry.radius();
+    const double E2 = material.in_plane_young_modulus();
+    const double c  = material.velocity_unit();
+    for (const auto &[name, value] :
+         std::vector<std::pair<std::string, double>>{
+           {"radius R", R},
+           {"in-plane modulus E2", E2},
+           {"velocity unit c", c},
+           {"mass rho pi R^2", material.density() * M_PI * R * R},
+           {"time unit R/c", R / c},
+           {"force unit E2 R", E2 * R},
+           {"energy unit E2 R^2", E2 * R * R},
+           {"stiffness unit E2 / R^2", E2 / (R * R)}})
+      require(std::isnormal(value) && value < 1e150 && value > 1e-150,
+              "the " + name + " = " + approximately(value) +
+                " is outside 1e-150 ... 1e150: choose units in which "
+                "'Radius', 'Young modulus' and 'Density' are closer to 1");
     if (run.task == Task::quasistatic_contact)
       {
         require(geometry.is_half_disk(),
@@ -63,13 +85,106 @@ namespace DiskImpact
     if (run.task == Task::impact || run.task == Task::impact_convergence ||
         run.task == Task::sweep)
       contact.check_wall(geometry, 0.05);
+    if (run.task == Task::impact || run.task == Task::impact_convergence)
+      time_integrator.check_time_step(
+        impact.estimate_collision(*this).contact_time);
+    if (run.task == Task::sweep)
+      for (const double v : impact.velocities())
+        {
+          Parameters point = *this;
+          point.impact.set_velocity(v);
+          time_integrator.check_time_step(
+            point.impact.estimate_collision(point).contact_time);
+        }
+    if (run.task == Task::sweep)
+      {
+        require(!impact.velocities().empty(),
+                "Impact: 'Velocities' is empty: task 'sweep' needs at least "
+                "one impact speed");
+        // Every point's material, checked before any point runs.
+        const auto in_list = [](const std::string &entry, const auto &check) {
+          try
+            {
+              check();
+            }
+          catch (const InputError &e)
+            {
+              throw InputError("Impact: an entry of '" + entry +
+                               "' is out of range (" + e.what() + ")");
+            }
+        };
+        for (const double nu : impact.poisson_ratios())
+          in_list("Poisson ratios", [&]() { material.with_poisson_ratio(nu); });
+        for (const double tau : impact.relaxation_times())
+          in_list("Relaxation times",
+                  [&]() { material.with_relaxation_time(tau); });
+      }
   }
+
+  namespace
+  {
+    /**
+     * Follow the 'include FILE' lines of parameter file @p filename as
+     * ParameterHandler will (FILE relative to the working directory, else
+     * to the including file's directory) and throw an InputError for a
+     * missing file or an include cycle, which would recurse without end.
+     * @p chain: the files including this one.
+     */
+    void
+    check_includes(const std::filesystem::path        &filename,
+                   std::vector<std::filesystem::path> &chain)
+    {
+      namespace fs = std::filesystem;
+      require(fs::is_regular_file(filename),
+              "parameter file '" + filename.string() + "' " +
+                (fs::is_directory(filename) ? "is a directory" :
+                                              "does not exist") +
+                (chain.empty() ?
+                   "" :
+                   " (included from '" + chain.back().string() + "')"));
+      const fs::path canonical = fs::canonical(filename);
+      require(std::find(chain.begin(), chain.end(), canonical) == chain.end(),
+              "parameter file '" + filename.string() +
+                "' includes itself (directly or through other files)");
+      chain.push_back(canonical);
+      std::ifstream in(filename);
+      std::string   line;
+      while (std::getline(in, line))
+        {
+          const auto start = line.find_first_not_of(" \t");
+          if (start == std::string::npos ||
+              line.compare(start, 8, "include ") != 0)
+            continue;
+          std::string included = line.substr(start + 8);
+          included             = included.substr(0, included.find('#'));
+          included.erase(included.find_last_not_of(" \t\r") + 1);
+          included.erase(0, included.find_first_not_of(" \t"));
+          fs::path path(included);
+          if (!fs::exists(path) && path.is_relative())
+            path = canonical.parent_path() / included;
+          check_includes(path, chain);
+        }
+      chain.pop_back();
+    }
+  } // namespace
 
   void
   read_parameter_file(ParameterHandler &prm, const std::string &filename)
   {
-    require(std::filesystem::is_regular_file(filename),
-            "parameter file '" + filename + "' does not exist");
+    std::vector<std::filesystem::path> chain;
+    check_includes(filename, chain);
+    // An empty file would run the defaults: almost surely not what was
+    // meant.
+    std::ifstream    in(filename);
+    const std::regex statement("^\\s*(set|SET|include|subsection)\\s");
+    std::string      line;
+    bool             sets_something = false;
+    while (!sets_something && std::getline(in, line))
+      sets_something = std::regex_search(line, statement);
+    require(sets_something,
+            "parameter file '" + filename +
+              "' sets nothing (empty, or comments only): give at least "
+              "'set Task = ...'");
     try
       {
         prm.parse_input(filename);
@@ -82,6 +197,18 @@ namespace DiskImpact
         std::string message =
           std::regex_replace(info.str(), std::regex("\\s+"), " ");
         message = std::regex_replace(message, std::regex("^ | $"), "");
+        // Quote the offending line, which deal.II only numbers.
+        std::smatch where;
+        if (std::regex_search(message,
+                              where,
+                              std::regex("Line <([0-9]+)> of file <([^>]*)>")))
+          {
+            std::ifstream file(where[2].str());
+            std::string   text;
+            for (int n = std::stoi(where[1].str()); n > 0; --n)
+              std::getline(file, text);
+            message += " (the line reads '" + Utilities::trim(text) + "')";
+          }
         throw InputError("in parameter file '" + filename + "': " + message);
       }
   }

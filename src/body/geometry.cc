@@ -23,11 +23,19 @@ namespace DiskImpact
                         const Point<2>    &contact_point,
                         const double       a,
                         const unsigned int n_across,
-                        const double       grading)
+                        const double       grading,
+                        const double       max_cells)
   {
     const double h_min = a / n_across;
     for (unsigned int step = 0; step < 60; ++step)
       {
+        require(triangulation.n_global_active_cells() <= max_cells,
+                "the mesh graded toward the contact point (" +
+                  std::to_string(n_across) +
+                  " elements across the contact, grading " +
+                  Utilities::to_string(grading) + ") would exceed " +
+                  approximately(max_cells) +
+                  " cells, more than this machine's memory holds");
         bool any = false;
         for (const auto &cell : triangulation.active_cell_iterators())
           if (cell->is_locally_owned())
@@ -101,7 +109,9 @@ namespace DiskImpact
               std::to_string(disk_radius));
     if (!mesh_file.empty())
       require(std::filesystem::is_regular_file(mesh_file),
-              "Geometry: mesh file '" + mesh_file + "' does not exist");
+              "Geometry: mesh file '" + mesh_file + "' " +
+                (std::filesystem::is_directory(mesh_file) ? "is a directory" :
+                                                            "does not exist"));
   }
 
   double
@@ -152,7 +162,29 @@ namespace DiskImpact
   }
 
   void
-  DiskGeometry::create_triangulation(Triangulation<2> &triangulation) const
+  DiskGeometry::create_triangulation(Triangulation<2> &triangulation,
+                                     const double      max_cells) const
+  {
+    create_coarse_triangulation(triangulation);
+    // Each global refinement quadruples the cells, each contact refinement
+    // adds about as many as the uniform mesh has.
+    const double n_cells = triangulation.n_global_active_cells() *
+                           std::pow(4., n_global_refinements) *
+                           (1. + n_contact_refinements);
+    require(n_cells <= max_cells,
+            "Geometry: 'Global refinements = " +
+              std::to_string(n_global_refinements) + "' (with " +
+              std::to_string(n_contact_refinements) +
+              " contact refinements) gives about " + approximately(n_cells) +
+              " cells, more than the " + approximately(max_cells) +
+              " this machine's memory holds");
+    triangulation.refine_global(n_global_refinements);
+    refine_toward_contact_point(triangulation);
+  }
+
+  void
+  DiskGeometry::create_coarse_triangulation(
+    Triangulation<2> &triangulation) const
   {
     if (mesh_file.empty())
       create_builtin_coarse_mesh(triangulation);
@@ -161,8 +193,6 @@ namespace DiskImpact
     set_boundary_and_manifold_ids(triangulation);
     triangulation.set_manifold(curved_manifold_id,
                                SphericalManifold<2>(center()));
-    triangulation.refine_global(n_global_refinements);
-    refine_toward_contact_point(triangulation);
   }
 
   void
@@ -204,9 +234,16 @@ namespace DiskImpact
     catch (const std::exception &e)
       {
         throw InputError("Geometry: cannot read gmsh file '" + mesh_file +
-                         "' (a 2D quadrilateral mesh in msh format 2.2 is "
-                         "expected)");
+                         "' (a 2D quadrilateral mesh in msh format 2.2 or 4.1 "
+                         "is expected)");
       }
+    require(triangulation.n_active_cells() > 0,
+            "Geometry: gmsh file '" + mesh_file + "' holds no cells");
+    require(triangulation.all_reference_cells_are_hyper_cube(),
+            "Geometry: gmsh file '" + mesh_file +
+              "' holds triangles; quadrilaterals only are supported "
+              "(recombine the mesh, e.g. 'Recombine Surface' in gmsh, as "
+              "meshes/disk.geo does)");
   }
 
   void

@@ -8,6 +8,7 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <limits>
 #include <string>
 
 namespace DiskImpact
@@ -46,14 +47,17 @@ namespace DiskImpact
    * size <= a / n_across and, farther out, size <= a / n_across +
    * grading (d - 1.5 a), d the distance to the contact point: the elements
    * across the whole contact zone of half-width a, not only the smallest,
-   * resolve it.
+   * resolve it. Throws an InputError if the mesh would exceed @p max_cells
+   * active cells.
    */
   void
-  refine_toward_contact(dealii::Triangulation<2> &triangulation,
-                        const dealii::Point<2>   &contact_point,
-                        double                    a,
-                        unsigned int              n_across,
-                        double                    grading);
+  refine_toward_contact(
+    dealii::Triangulation<2> &triangulation,
+    const dealii::Point<2>   &contact_point,
+    double                    a,
+    unsigned int              n_across,
+    double                    grading,
+    double max_cells = std::numeric_limits<double>::infinity());
 
   /**
    * The disk: radius, full or half domain, built-in or gmsh mesh, global
@@ -84,9 +88,20 @@ namespace DiskImpact
     void
     set_global_refinements(unsigned int n);
 
-    /// Build the coarse mesh, attach the manifold and refine.
+    /// Build the coarse mesh, attach the manifold and refine; throws an
+    /// InputError if the refined mesh would exceed about @p max_cells cells.
     void
-    create_triangulation(dealii::Triangulation<2> &triangulation) const;
+    create_triangulation(
+      dealii::Triangulation<2> &triangulation,
+      double max_cells = std::numeric_limits<double>::infinity()) const;
+
+    /**
+     * The coarse mesh alone (built in, or read from 'Mesh file'), with its
+     * boundary and manifold ids; throws an InputError for a mesh that is
+     * not a disk of this radius and domain made of quadrilaterals.
+     */
+    void
+    create_coarse_triangulation(dealii::Triangulation<2> &triangulation) const;
 
     /// One line describing the mesh source and refinement.
     std::string

@@ -52,6 +52,14 @@ namespace DiskImpact
                       "30",
                       Patterns::Integer(1, 1000),
                       "Newton iterations per step before the step is cut.");
+    prm.declare_entry("Energy tolerance",
+                      "1e-6",
+                      Patterns::Double(0.),
+                      "Scheme 'energy conserving': the largest change of the "
+                      "total energy (kinetic + strain + contact + "
+                      "dissipated), relative to the initial energy, that a "
+                      "run may show; more ends the run with an error (the "
+                      "balance is its accuracy check) [-].");
     prm.declare_entry("Maximum step cuts",
                       "4",
                       Patterns::Integer(0, 20),
@@ -76,6 +84,7 @@ namespace DiskImpact
     tolerance           = prm.get_double("Newton tolerance");
     max_iterations      = prm.get_integer("Maximum Newton iterations");
     n_step_cuts         = prm.get_integer("Maximum step cuts");
+    energy_tolerance    = prm.get_double("Energy tolerance");
     prm.leave_subsection();
   }
 
@@ -162,5 +171,31 @@ namespace DiskImpact
   TimeIntegrator::damping_coefficient(const double dt) const
   {
     return (1. - alpha_f) * gamma / (beta * dt);
+  }
+
+  bool
+  TimeIntegrator::conserves_energy() const
+  {
+    return average == ContactAverage::discrete_gradient && alpha_f == 0.5 &&
+           alpha_m == 0.5;
+  }
+
+  double
+  TimeIntegrator::energy_error_tolerance() const
+  {
+    return energy_tolerance;
+  }
+
+  void
+  TimeIntegrator::check_time_step(const double contact_time_estimate) const
+  {
+    if (fixed_time_step > 0.)
+      require(fixed_time_step >= 1e-6 * contact_time_estimate &&
+                fixed_time_step <= 0.5 * contact_time_estimate,
+              "Time stepping: 'Time step' = " + approximately(fixed_time_step) +
+                " must lie between 1e-6 and 0.5 times the contact time the "
+                "1-DOF model expects, " +
+                approximately(contact_time_estimate, 4) +
+                " (as 'Time step fraction' does)");
   }
 } // namespace DiskImpact

@@ -57,6 +57,19 @@ namespace DiskImpact
     max_newton_iterations() const;
     unsigned int
     max_step_cuts() const;
+    /// Throw an InputError unless a fixed 'Time step' lies within the
+    /// range 'Time step fraction' allows, relative to
+    /// @p contact_time_estimate.
+    void
+    check_time_step(double contact_time_estimate) const;
+    /// Whether the scheme conserves the total energy (the midpoint rule
+    /// with the discrete-gradient contact force).
+    bool
+    conserves_energy() const;
+    /// The relative energy error such a scheme may show ('Energy
+    /// tolerance').
+    double
+    energy_error_tolerance() const;
     /// The same scheme with the time step scaled by @p factor.
     TimeIntegrator
     with_time_step_scaled(double factor) const;
@@ -130,6 +143,7 @@ namespace DiskImpact
     double         tolerance           = 1e-13;
     unsigned int   max_iterations      = 30;
     unsigned int   n_step_cuts         = 4;
+    double         energy_tolerance    = 1e-6;
     double         alpha_m             = 0.5;
     double         alpha_f             = 0.5;
     double         beta                = 0.25;

@@ -1,5 +1,7 @@
 #include "modal/modal_analysis.h"
 
+#include "base/run_error.h"
+#include "output/atomic_file.h"
 #include "output/csv_table.h"
 
 #include <deal.II/base/utilities.h>
@@ -197,11 +199,11 @@ namespace DiskImpact
     data_out.set_flags(flags);
     const std::string name = data_out.write_vtu_with_pvtu_record(
       directory + "/", "modes", 0, communicator, 1);
-    if (Utilities::MPI::this_mpi_process(communicator) == 0)
-      {
-        std::ofstream pvd(directory + "/modes.pvd");
-        DataOutBase::write_pvd_record(pvd, {{0., name}});
-      }
+    on_root(communicator, [&]() {
+      write_atomically(directory + "/modes.pvd", [&](std::ostream &out) {
+        DataOutBase::write_pvd_record(out, {{0., name}});
+      });
+    });
   }
 
   void

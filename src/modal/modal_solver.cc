@@ -1,6 +1,7 @@
 #include "modal/modal_solver.h"
 
 #include "base/petsc_check.h"
+#include "base/run_error.h"
 #include "elasticity/elasticity_operator.h"
 
 #include <slepceps.h>
@@ -114,9 +115,9 @@ namespace DiskImpact
     PetscInt n_converged = 0;
     check_petsc(EPSGetConverged(eps, &n_converged), "EPSGetConverged");
     if (n_converged < static_cast<PetscInt>(n_wanted))
-      throw std::runtime_error("the eigensolver converged " +
-                               std::to_string(n_converged) + " of " +
-                               std::to_string(n_wanted) + " eigenpairs");
+      throw RunError("the eigensolver converged " +
+                     std::to_string(n_converged) + " of " +
+                     std::to_string(n_wanted) + " eigenpairs");
 
     std::vector<double>                     values(n_converged);
     std::vector<PETScWrappers::MPI::Vector> vectors;

@@ -1,6 +1,9 @@
 #include "output/csv_table.h"
 
+#include "output/atomic_file.h"
+
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -35,7 +38,8 @@ namespace DiskImpact
   void
   CsvTable::add(const double value)
   {
-    add(format(value));
+    // A value that does not exist (NaN) is an empty cell.
+    add(std::isnan(value) ? std::string() : format(value));
   }
 
   void
@@ -134,11 +138,7 @@ namespace DiskImpact
   void
   CsvTable::write(const std::string &filename) const
   {
-    const std::string temporary = filename + ".tmp";
-    {
-      std::ofstream out(temporary);
-      if (!out)
-        throw std::runtime_error("cannot write " + temporary);
+    write_atomically(filename, [this](std::ostream &out) {
       auto write_line = [&out](const std::vector<std::string> &cells) {
         for (unsigned int i = 0; i < cells.size(); ++i)
           out << (i > 0 ? "," : "") << cells[i];
@@ -147,11 +147,44 @@ namespace DiskImpact
       write_line(header);
       for (const auto &row : rows)
         write_line(row);
-      if (!out)
-        throw std::runtime_error("error while writing " + temporary);
-    }
-    if (std::rename(temporary.c_str(), filename.c_str()) != 0)
-      throw std::runtime_error("cannot rename " + temporary + " to " +
-                               filename);
+    });
+  }
+
+  CsvTable
+  CsvTable::read(const std::string &filename)
+  {
+    std::ifstream in(filename);
+    if (!in)
+      throw std::runtime_error("cannot read " + filename);
+    auto split = [](const std::string &line) {
+      std::vector<std::string> cells;
+      std::stringstream        stream(line);
+      std::string              cell;
+      while (std::getline(stream, cell, ','))
+        cells.push_back(cell);
+      if (!line.empty() && line.back() == ',')
+        cells.emplace_back();
+      return cells;
+    };
+    std::string line;
+    if (!std::getline(in, line))
+      throw std::runtime_error(filename + " is empty");
+    CsvTable table(split(line));
+    while (std::getline(in, line))
+      {
+        const auto cells = split(line);
+        if (cells.size() != table.header.size())
+          throw std::runtime_error(
+            filename + ": a row has " + std::to_string(cells.size()) +
+            " cells, the header " + std::to_string(table.header.size()));
+        table.rows.push_back(cells);
+      }
+    return table;
+  }
+
+  std::vector<std::string>
+  CsvTable::row(const unsigned int index) const
+  {
+    return rows.at(index);
   }
 } // namespace DiskImpact

@@ -50,9 +50,18 @@ namespace DiskImpact
     std::vector<std::string>
     text_column(const std::string &name) const;
 
-    /// Write to @p filename through a temporary file and a rename.
+    /// Write to @p filename whole or not at all (write_atomically()).
     void
     write(const std::string &filename) const;
+
+    /// A table written by write(); throws std::runtime_error if the file
+    /// cannot be read or a row's length differs from the header's.
+    static CsvTable
+    read(const std::string &filename);
+
+    /// The cells of row @p index as written.
+    std::vector<std::string>
+    row(unsigned int index) const;
 
     /// Format a number the way the table does.
     static std::string

@@ -1,12 +1,9 @@
 #include "output/hdf5_output.h"
 
+#include "output/atomic_file.h"
 #include "output/csv_table.h"
 
-#include <deal.II/base/hdf5.h>
-
-#include <cstdio>
-#include <fstream>
-#include <hdf5.h>
+#include <filesystem>
 #include <stdexcept>
 
 namespace DiskImpact
@@ -15,8 +12,8 @@ namespace DiskImpact
   {
     /**
      * While alive, replaces HDF5's automatic error printing by a record of
-     * the failures, so that a failed HDF5 call (which deal.II checks only
-     * in Debug builds) becomes an exception.
+     * the first failure, so that a failed HDF5 call becomes an exception
+     * (throw_if_failed()) instead of a page of text.
      */
     class Hdf5ErrorRecorder
     {
@@ -40,12 +37,9 @@ namespace DiskImpact
       void
       throw_if_failed(const std::string &what) const
       {
-        if (!failed)
-          return;
-        std::string message = "HDF5 error while " + what + ": " + outermost;
-        if (innermost != outermost)
-          message += " (" + innermost + ")";
-        throw std::runtime_error(message);
+        if (failed)
+          throw std::runtime_error("HDF5 error while " + what + ": " +
+                                   description);
       }
 
     private:
@@ -60,67 +54,22 @@ namespace DiskImpact
         return 0;
       }
 
-      /// Error-stack walker, from the API call down to the cause.
+      /// Error-stack walker: the API call that failed.
       static herr_t
       describe(unsigned int n, const H5E_error2_t *error, void *data)
       {
-        auto *self      = static_cast<Hdf5ErrorRecorder *>(data);
-        self->innermost = std::string(error->func_name) +
-                          "(): " + (error->desc ? error->desc : "");
+        auto *self = static_cast<Hdf5ErrorRecorder *>(data);
         if (n == 0)
-          self->outermost = self->innermost;
+          self->description = std::string(error->func_name) +
+                              "(): " + (error->desc ? error->desc : "");
         return 0;
       }
 
       H5E_auto2_t old_handler = nullptr;
       void       *old_data    = nullptr;
       bool        failed      = false;
-      std::string outermost;
-      std::string innermost;
+      std::string description;
     };
-
-    /**
-     * Open the HDF5 file @p path, apply @p operation to its group @p group
-     * (created first if @p create), and close the file; then throw
-     * std::runtime_error about @p what if an HDF5 call failed. No HDF5
-     * object outlives the call, and @p operation must not throw.
-     */
-    template <typename Operation>
-    void
-    with_group(const std::string &path,
-               const std::string &group,
-               const bool         create,
-               const std::string &what,
-               Operation        &&operation)
-    {
-      Hdf5ErrorRecorder recorder;
-      {
-        dealii::HDF5::File file(path, dealii::HDF5::File::FileAccessMode::open);
-        if (group == "/")
-          operation(file);
-        else
-          {
-            dealii::HDF5::Group handle =
-              create ? file.create_group(group) : file.open_group(group);
-            operation(handle);
-          }
-      }
-      recorder.throw_if_failed(what);
-    }
-
-    /// Create (or truncate) the HDF5 file @p path.
-    void
-    create_file(const std::string &path)
-    {
-      if (!std::ofstream(path))
-        throw std::runtime_error("cannot write " + path);
-      Hdf5ErrorRecorder recorder;
-      {
-        dealii::HDF5::File file(path,
-                                dealii::HDF5::File::FileAccessMode::create);
-      }
-      recorder.throw_if_failed("creating " + path);
-    }
 
     /// "group/name", or "/name" in the root group: for messages.
     std::string
@@ -132,23 +81,45 @@ namespace DiskImpact
 
   Hdf5Output::Hdf5Output(const std::string &filename)
       : filename(filename)
-      , temporary(filename + ".tmp")
   {
-    try
-      {
-        create_file(temporary);
-      }
-    catch (...)
-      {
-        std::remove(temporary.c_str());
-        throw;
-      }
+    const auto directory = std::filesystem::path(filename).parent_path();
+    if (!directory.empty() && !std::filesystem::is_directory(directory))
+      throw std::runtime_error("cannot write " + filename + ": no directory " +
+                               directory.string());
+    Hdf5ErrorRecorder recorder;
+    // In memory, no backing store: finish() writes the file image.
+    const hid_t access = H5Pcreate(H5P_FILE_ACCESS);
+    H5Pset_fapl_core(access, 1 << 16, 0);
+    file = H5Fcreate(filename.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access);
+    H5Pclose(access);
+    recorder.throw_if_failed("creating " + filename + " in memory");
   }
 
   Hdf5Output::~Hdf5Output()
   {
-    if (!finished)
-      std::remove(temporary.c_str());
+    if (file >= 0)
+      {
+        Hdf5ErrorRecorder recorder;
+        H5Fclose(file);
+      }
+  }
+
+  hid_t
+  Hdf5Output::open_group(const std::string &group)
+  {
+    if (group == "/")
+      return file;
+    if (H5Lexists(file, group.c_str(), H5P_DEFAULT) > 0)
+      return H5Gopen2(file, group.c_str(), H5P_DEFAULT);
+    return H5Gcreate2(
+      file, group.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  }
+
+  void
+  Hdf5Output::close_group(const hid_t id) const
+  {
+    if (id != file && id >= 0)
+      H5Gclose(id);
   }
 
   void
@@ -185,40 +156,30 @@ namespace DiskImpact
                            const std::vector<double> &values)
   {
     claim(group, name);
-    with_group(temporary,
-               group,
-               is_new_group(group),
-               "writing dataset " + object_path(group, name) + " to " +
-                 temporary,
-               [&](dealii::HDF5::Group &handle) {
-                 auto dataset = handle.create_dataset<double>(
-                   name, {static_cast<hsize_t>(values.size())});
-                 if (!values.empty())
-                   dataset.write(values);
-               });
+    Hdf5ErrorRecorder recorder;
+    const hid_t       parent  = open_group(group);
+    const hsize_t     size    = values.size();
+    const hid_t       space   = H5Screate_simple(1, &size, nullptr);
+    const hid_t       dataset = H5Dcreate2(parent,
+                                     name.c_str(),
+                                     H5T_NATIVE_DOUBLE,
+                                     space,
+                                     H5P_DEFAULT,
+                                     H5P_DEFAULT,
+                                     H5P_DEFAULT);
+    if (!values.empty())
+      H5Dwrite(dataset,
+               H5T_NATIVE_DOUBLE,
+               H5S_ALL,
+               H5S_ALL,
+               H5P_DEFAULT,
+               values.data());
+    H5Dclose(dataset);
+    H5Sclose(space);
+    close_group(parent);
+    recorder.throw_if_failed("writing dataset " + object_path(group, name) +
+                             " of " + filename);
   }
-
-  namespace
-  {
-    /// Attribute @p name = @p value of @p group in the file @p path.
-    template <typename T>
-    void
-    write_attribute(const std::string &path,
-                    const std::string &group,
-                    const bool         create_group,
-                    const std::string &name,
-                    const T           &value)
-    {
-      with_group(path,
-                 group,
-                 create_group,
-                 "writing attribute " + object_path(group, name) + " to " +
-                   path,
-                 [&](dealii::HDF5::Group &handle) {
-                   handle.set_attribute<T>(name, value);
-                 });
-    }
-  } // namespace
 
   void
   Hdf5Output::set_attribute(const std::string &group,
@@ -226,7 +187,17 @@ namespace DiskImpact
                             const double       value)
   {
     claim(group, name);
-    write_attribute(temporary, group, is_new_group(group), name, value);
+    Hdf5ErrorRecorder recorder;
+    const hid_t       parent    = open_group(group);
+    const hid_t       space     = H5Screate(H5S_SCALAR);
+    const hid_t       attribute = H5Acreate2(
+      parent, name.c_str(), H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT);
+    H5Awrite(attribute, H5T_NATIVE_DOUBLE, &value);
+    H5Aclose(attribute);
+    H5Sclose(space);
+    close_group(parent);
+    recorder.throw_if_failed("writing attribute " + object_path(group, name) +
+                             " of " + filename);
   }
 
   void
@@ -235,7 +206,23 @@ namespace DiskImpact
                             const std::string &value)
   {
     claim(group, name);
-    write_attribute(temporary, group, is_new_group(group), name, value);
+    Hdf5ErrorRecorder recorder;
+    const hid_t       parent = open_group(group);
+    // A variable-length UTF-8 string, as h5py writes str attributes.
+    const hid_t type = H5Tcopy(H5T_C_S1);
+    H5Tset_size(type, H5T_VARIABLE);
+    H5Tset_cset(type, H5T_CSET_UTF8);
+    const hid_t space = H5Screate(H5S_SCALAR);
+    const hid_t attribute =
+      H5Acreate2(parent, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT);
+    const char *text = value.c_str();
+    H5Awrite(attribute, type, &text);
+    H5Aclose(attribute);
+    H5Sclose(space);
+    H5Tclose(type);
+    close_group(parent);
+    recorder.throw_if_failed("writing attribute " + object_path(group, name) +
+                             " of " + filename);
   }
 
   void
@@ -243,10 +230,20 @@ namespace DiskImpact
   {
     if (finished)
       throw std::logic_error("Hdf5Output: " + filename + " finished twice");
-    if (std::rename(temporary.c_str(), filename.c_str()) != 0)
-      throw std::runtime_error("cannot rename " + temporary + " to " +
-                               filename);
+    std::string image;
+    {
+      Hdf5ErrorRecorder recorder;
+      H5Fflush(file, H5F_SCOPE_GLOBAL);
+      const ssize_t size = H5Fget_file_image(file, nullptr, 0);
+      if (size > 0)
+        {
+          image.resize(size);
+          H5Fget_file_image(file, image.data(), size);
+        }
+      recorder.throw_if_failed("building " + filename);
+    }
     finished = true;
+    write_atomically(filename, image);
   }
 
   void
@@ -265,11 +262,5 @@ namespace DiskImpact
     if (!written.insert(object_path(group, name)).second)
       throw std::invalid_argument("Hdf5Output: " + object_path(group, name) +
                                   " is written twice in " + filename);
-  }
-
-  bool
-  Hdf5Output::is_new_group(const std::string &group)
-  {
-    return group != "/" && created_groups.insert(group).second;
   }
 } // namespace DiskImpact

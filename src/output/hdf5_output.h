@@ -1,5 +1,6 @@
 #pragma once
 
+#include <hdf5.h>
 #include <set>
 #include <string>
 #include <vector>
@@ -10,38 +11,32 @@ namespace DiskImpact
 
   /**
    * An HDF5 result file of named groups holding 1-D double datasets (table
-   * columns, DoF vectors) and scalar attributes (numbers, strings), built on
-   * deal.II's HDF5 wrapper. h5py reads a column as f["group"]["name"].
+   * columns, DoF vectors) and scalar attributes (numbers, strings). h5py
+   * reads a column as f["group"]["name"].
    *
-   * The file is written atomically: everything goes to FILENAME.tmp, which
-   * finish() renames to FILENAME. A writer destroyed without finish() (e.g.
-   * during stack unwinding) deletes FILENAME.tmp, so a reader never sees a
-   * half-written file and a failed run leaves no FILENAME.
+   * The file is built in memory (HDF5's core driver) and written to disk in
+   * one piece by finish(), through write_atomically(): FILENAME appears
+   * whole or not at all, and a full disk is one line of error, as for every
+   * other result file. A writer destroyed without finish() writes nothing.
+   * HDF5's C interface is used directly: deal.II's wrapper checks HDF5's
+   * return codes only in Debug builds and aborts MPI when its objects are
+   * destroyed while an exception propagates.
    *
-   * Each call opens FILENAME.tmp, writes and closes it again, so no HDF5
-   * object is alive between calls: deal.II (built with MPI) calls MPI_Abort
-   * when an HDF5 object is destroyed while an exception propagates, even for
-   * a serial file.
-   *
-   * The file is opened with HDF5's serial (POSIX) driver, which is not
-   * collective even in the MPI build of HDF5: use this class on one process
-   * only (e.g. MPI rank 0, with the data gathered there), never on several
-   * ranks with the same file name.
-   *
-   * Group names: "/" is the file's root; any other name is a group directly
-   * below it, created on first use. Each dataset or attribute name is
-   * written once per group. Errors throw: std::invalid_argument for a
-   * repeated or invalid name, std::logic_error for a write after finish(),
-   * std::runtime_error for a failure of HDF5 or of the file system (in a
-   * Debug build deal.II's own checks may stop the program first).
+   * Use it on one process only (e.g. MPI rank 0, with the data gathered
+   * there). Group names: "/" is the file's root; any other name is a group
+   * directly below it, created on first use. Each dataset or attribute
+   * name is written once per group. Errors throw: std::invalid_argument for
+   * a repeated or invalid name, std::logic_error for a write after
+   * finish(), std::runtime_error for a failure of HDF5 or of the file
+   * system.
    */
   class Hdf5Output
   {
   public:
-    /// Create FILENAME.tmp (truncating an old one); FILENAME is untouched.
+    /// An empty file in memory; throws if @p filename's directory does not
+    /// exist.
     explicit Hdf5Output(const std::string &filename);
 
-    /// Without finish(): delete FILENAME.tmp.
     ~Hdf5Output();
 
     Hdf5Output(const Hdf5Output &) = delete;
@@ -76,23 +71,25 @@ namespace DiskImpact
                   const std::string &name,
                   const std::string &value);
 
-    /// Rename FILENAME.tmp to FILENAME; no writes after this.
+    /// Write the file to FILENAME (whole or not at all); no writes after
+    /// this.
     void
     finish();
-
 
   private:
     /// Record @p name in @p group as written; throws if it cannot be.
     void
     claim(const std::string &group, const std::string &name);
 
-    /// Whether @p group has yet to be created (and mark it as created).
-    bool
-    is_new_group(const std::string &group);
+    /// The HDF5 id of @p group (the file for "/"), created on first use;
+    /// the caller closes it with close_group().
+    hid_t
+    open_group(const std::string &group);
+    void
+    close_group(hid_t id) const;
 
     const std::string     filename;
-    const std::string     temporary;
-    std::set<std::string> created_groups;
+    hid_t                 file = -1;
     std::set<std::string> written;
     bool                  finished = false;
   };

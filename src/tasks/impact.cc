@@ -2,12 +2,18 @@
 
 #include "base/input_error.h"
 #include "base/parameter_lists.h"
+#include "base/parameters.h"
+#include "body/geometry.h"
 #include "output/csv_table.h"
+#include "reference/collision_ode.h"
+#include "reference/log_contact_law.h"
+#include "reference/one_dof_impact.h"
 #include "tasks/impact_simulation.h"
 
 #include <deal.II/base/utilities.h>
 
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 namespace DiskImpact
@@ -23,16 +29,16 @@ namespace DiskImpact
     {
       if (text == "fit")
         return -1. - 2. / M_PI - nu2 / 4.;
-      try
-        {
-          return std::stod(text);
-        }
-      catch (const std::exception &)
-        {
-          throw InputError("Impact: 'Contact law constant' must be 'fit' or "
-                           "a number, got '" +
-                           text + "'");
-        }
+      // The whole text must be one finite number ("1x" is not).
+      std::istringstream stream(text);
+      double             value = 0.;
+      stream >> value;
+      require(!stream.fail() && (stream >> std::ws).eof() &&
+                std::isfinite(value),
+              "Impact: 'Contact law constant' must be 'fit' or a finite "
+              "number, got '" +
+                text + "'");
+      return value;
     }
 
   } // namespace
@@ -100,6 +106,14 @@ namespace DiskImpact
                       "extrapolated epsilon and error bar (epsilon, "
                       "epsilon_error); false: one run per point, no error "
                       "bar.");
+    prm.declare_entry("Resume",
+                      "true",
+                      Patterns::Bool(),
+                      "Task 'sweep': keep the finished points of an earlier "
+                      "sweep of the same parameters in the output directory "
+                      "(restitution.csv) and compute only the others; a "
+                      "table of other parameters there is an error. false: "
+                      "start afresh, removing the earlier table.");
     prm.declare_entry("Margin",
                       "0.2",
                       Patterns::Double(0., 10.),
@@ -123,6 +137,7 @@ namespace DiskImpact
     sweep_poisson_ratios    = get_double_list(prm, "Poisson ratios");
     sweep_relaxation_times  = get_double_list(prm, "Relaxation times");
     error_estimate          = prm.get_bool("Error estimate");
+    resume_sweep            = prm.get_bool("Resume");
     require_each(
       sweep_velocities,
       [](const double v) { return v > 0. && v <= 0.5; },
@@ -171,6 +186,12 @@ namespace DiskImpact
     return error_estimate;
   }
 
+  bool
+  Impact::resume() const
+  {
+    return resume_sweep;
+  }
+
   Impact
   Impact::with_mesh_refined(const unsigned int levels) const
   {
@@ -184,6 +205,80 @@ namespace DiskImpact
   Impact::contact_law_constant_value(const double nu2) const
   {
     return parse_contact_law_constant(contact_law_constant, nu2);
+  }
+
+  CollisionEstimate
+  Impact::estimate_collision(const Parameters &parameters) const
+  {
+    const auto  &material = parameters.material;
+    const double R        = parameters.geometry.radius();
+    const double E2       = material.in_plane_young_modulus();
+    const double c        = material.velocity_unit();
+    const double v0       = impact_velocity * c;
+    const double mass     = material.density() * M_PI * R * R;
+    const double C =
+      contact_law_constant_value(material.in_plane_poisson_ratio());
+    CollisionEstimate estimate;
+    try
+      {
+        const auto one_dof    = Reference::one_dof_impact(v0, mass, E2, R, C);
+        estimate.contact_time = one_dof.contact_time;
+        estimate.largest_load = one_dof.max_force / (M_PI * E2 * R);
+        estimate.one_dof_contact_time = one_dof.contact_time * c / R;
+        estimate.one_dof_delta_max    = one_dof.max_compression / R;
+        // With Kelvin-Voigt viscosity: m xi'' + F + tau xi' F' = 0 (seed
+        // 000, eq. 4 with A = tau), ended when the force returns to zero.
+        const double tau = material.relaxation_time();
+        if (tau > 0.)
+          {
+            const auto viscous =
+              Reference::collide(mass,
+                                 v0,
+                                 Reference::disk_force_law(E2, R, C),
+                                 tau,
+                                 Reference::EndCriterion::force,
+                                 1e-12);
+            estimate.one_dof_epsilon      = viscous.epsilon;
+            estimate.one_dof_contact_time = viscous.contact_time * c / R;
+            estimate.one_dof_delta_max    = viscous.max_overlap / R;
+          }
+      }
+    catch (const std::domain_error &)
+      {
+        // Beyond the log law's largest compression: no 1-DOF collision;
+        // the contact time and load of seed 001's eq. 61.
+        estimate.one_dof_contact_time = std::nan("");
+        estimate.one_dof_delta_max    = std::nan("");
+        estimate.one_dof_epsilon      = std::nan("");
+        const double speed            = impact_velocity;
+        const double delta    = speed * R * std::sqrt(std::log(4. / speed));
+        estimate.contact_time = M_PI * delta / v0;
+        estimate.largest_load = delta / (R * std::log(4. * R / delta));
+      }
+    return estimate;
+  }
+
+  double
+  Impact::largest_half_width(const Parameters &parameters) const
+  {
+    return Reference::hertz_half_width(
+             estimate_collision(parameters).largest_load) *
+           parameters.geometry.radius();
+  }
+
+  void
+  Impact::create_mesh(const Parameters &parameters,
+                      Triangulation<2> &triangulation,
+                      const double      max_cells) const
+  {
+    const auto &geometry = parameters.geometry;
+    geometry.create_triangulation(triangulation, max_cells);
+    refine_toward_contact(triangulation,
+                          geometry.contact_point(),
+                          largest_half_width(parameters),
+                          elements_across_contact,
+                          grading,
+                          max_cells);
   }
 
   ImpactSummary

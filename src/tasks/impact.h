@@ -2,8 +2,11 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <deal.II/grid/tria.h>
+
 #include <mpi.h>
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -38,6 +41,17 @@ namespace DiskImpact
     double       one_dof_epsilon       = 1.; ///< 1-DOF log law with viscosity
   };
 
+  /// What the 1-DOF log-law model expects of a collision: the basis of the
+  /// time step and of the mesh near the contact.
+  struct CollisionEstimate
+  {
+    double contact_time         = 0.; ///< [time], for the time step
+    double largest_load         = 0.; ///< P / (pi E2 R) at the largest force
+    double one_dof_contact_time = 0.; ///< [R / c]; NaN beyond the log law
+    double one_dof_delta_max    = 0.; ///< [R]; NaN beyond the log law
+    double one_dof_epsilon      = 1.; ///< with viscosity; NaN beyond it
+  };
+
   /**
    * Task 'impact': the disk, undeformed, moving toward the wall with speed
    * v (subsection Impact), touching it at t = 0. Implicit time integration
@@ -69,11 +83,30 @@ namespace DiskImpact
     relaxation_times() const;
     bool
     estimate_errors() const;
+    /// Task 'sweep': whether to keep an earlier sweep's finished points.
+    bool
+    resume() const;
     /// The same impact on a mesh with every element size halved @p levels
     /// times near the contact: elements across it * 2^levels, grading /
     /// 2^levels (global refinements are the geometry's).
     Impact
     with_mesh_refined(unsigned int levels) const;
+
+    /// The 1-DOF log-law collision at this velocity (beyond the log law's
+    /// range: seed 001's eq. 61 for the contact time and load).
+    CollisionEstimate
+    estimate_collision(const Parameters &parameters) const;
+    /// The Hertz half-width at the largest expected force [length]: the
+    /// contact zone the mesh is graded for.
+    double
+    largest_half_width(const Parameters &parameters) const;
+    /// The impact's mesh: the geometry's, graded toward the contact point;
+    /// throws an InputError if it would exceed about @p max_cells cells.
+    void
+    create_mesh(
+      const Parameters         &parameters,
+      dealii::Triangulation<2> &triangulation,
+      double max_cells = std::numeric_limits<double>::infinity()) const;
 
     /// C of the 1-DOF model's log law for the in-plane ratio @p nu2.
     double
@@ -99,6 +132,7 @@ namespace DiskImpact
     std::vector<double> sweep_poisson_ratios;
     std::vector<double> sweep_relaxation_times;
     bool                error_estimate          = true;
+    bool                resume_sweep            = true;
     unsigned int        elements_across_contact = 12;
     double              grading                 = 0.3;
     std::string         contact_law_constant    = "fit";

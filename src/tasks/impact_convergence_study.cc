@@ -1,6 +1,7 @@
 #include "tasks/impact_convergence_study.h"
 
 #include "base/parameters.h"
+#include "base/run_error.h"
 #include "output/csv_table.h"
 
 #include <deal.II/base/conditional_ostream.h>
@@ -107,6 +108,12 @@ namespace DiskImpact
     return finer;
   }
 
+  Parameters
+  ImpactConvergenceStudy::finest(const Parameters &parameters) const
+  {
+    return refined(parameters, "mesh", mesh_levels - 1);
+  }
+
   std::vector<StudyRun>
   ImpactConvergenceStudy::run_all(const std::vector<StudyRun>   &runs,
                                   const std::vector<Parameters> &points,
@@ -143,31 +150,46 @@ namespace DiskImpact
     // rank did not run it).
     constexpr unsigned int n_fields = 11;
     std::vector<double>    fields(n_fields * runs.size(), 0.);
-    for (unsigned int i = 0; i < runs.size(); ++i)
-      if (owner[i] == rank)
+    auto                   run_one = [&](const unsigned int i) {
+      const auto    start = std::chrono::steady_clock::now();
+      ImpactSummary s;
+      try
         {
-          const auto start = std::chrono::steady_clock::now();
-          const auto s = points[i].impact.run(points[i], MPI_COMM_SELF, false);
-          const double seconds = std::chrono::duration<double>(
-                                   std::chrono::steady_clock::now() - start)
-                                   .count();
-          const std::array<double, n_fields> values{
-            {s.epsilon,
-             s.contact_time,
-             s.delta_max,
-             s.force_max,
-             s.energy_error,
-             s.time_step,
-             static_cast<double>(s.n_dofs),
-             static_cast<double>(s.steps),
-             seconds,
-             s.schwager_alpha,
-             s.one_dof_epsilon}};
-          std::copy(values.begin(), values.end(), &fields[n_fields * i]);
-          if (log != nullptr)
-            *log << describe({runs[i].factor, runs[i].level, s, seconds})
-                 << std::flush;
+          s = points[i].impact.run(points[i], MPI_COMM_SELF, false);
         }
+      catch (const std::exception &e)
+        {
+          throw std::runtime_error("convergence study, " + runs[i].factor +
+                                   " level " + std::to_string(runs[i].level) +
+                                   ": " + e.what());
+        }
+
+      const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+          .count();
+      const std::array<double, n_fields> values{{s.epsilon,
+                                                 s.contact_time,
+                                                 s.delta_max,
+                                                 s.force_max,
+                                                 s.energy_error,
+                                                 s.time_step,
+                                                 static_cast<double>(s.n_dofs),
+                                                 static_cast<double>(s.steps),
+                                                 seconds,
+                                                 s.schwager_alpha,
+                                                 s.one_dof_epsilon}};
+      std::copy(values.begin(), values.end(), &fields[n_fields * i]);
+      if (log != nullptr)
+        *log << describe({runs[i].factor, runs[i].level, s, seconds})
+             << std::flush;
+    };
+    // A run that fails on one rank fails the study on all (after each rank
+    // has ended its own runs).
+    collectively(communicator, [&]() {
+      for (unsigned int i = 0; i < runs.size(); ++i)
+        if (owner[i] == rank)
+          run_one(i);
+    });
     Utilities::MPI::sum(fields, communicator, fields);
 
     std::vector<StudyRun> done = runs;
@@ -310,13 +332,12 @@ namespace DiskImpact
                                         communicator,
                                         root ? &std::cout : nullptr);
     const std::string &directory = parameters.run.output_directory;
-    if (root)
-      {
-        ImpactConvergenceStudy::runs_table(result).write(
-          directory + "/impact_convergence.csv");
-        ImpactConvergenceStudy::estimates_table(result).write(
-          directory + "/epsilon_estimate.csv");
-      }
+    on_root(communicator, [&]() {
+      ImpactConvergenceStudy::runs_table(result).write(
+        directory + "/impact_convergence.csv");
+      ImpactConvergenceStudy::estimates_table(result).write(
+        directory + "/epsilon_estimate.csv");
+    });
     std::ostringstream out;
     out << "All runs:\n";
     for (const auto &run : result.runs)

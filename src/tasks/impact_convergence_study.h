@@ -67,6 +67,11 @@ namespace DiskImpact
         MPI_Comm          communicator,
         std::ostream     *log) const;
 
+    /// @p parameters refined as the study's finest mesh level: its largest
+    /// discretization.
+    Parameters
+    finest(const Parameters &parameters) const;
+
     /// The runs as a table (factor, level, epsilon, ...).
     static CsvTable
     runs_table(const ConvergedEpsilon &result);

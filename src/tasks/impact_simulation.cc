@@ -1,11 +1,10 @@
 #include "tasks/impact_simulation.h"
 
 #include "base/parameters.h"
+#include "base/run_error.h"
+#include "output/atomic_file.h"
 #include "output/hdf5_output.h"
 #include "output/state_output.h"
-#include "reference/collision_ode.h"
-#include "reference/log_contact_law.h"
-#include "reference/one_dof_impact.h"
 
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/function.h>
@@ -15,8 +14,8 @@
 
 #include <chrono>
 #include <cmath>
-#include <fstream>
 #include <stdexcept>
+#include <tuple>
 
 namespace DiskImpact
 {
@@ -24,6 +23,12 @@ namespace DiskImpact
 
   namespace
   {
+    /// What makes an impact's result unphysical, for the messages.
+    const std::string likely_causes =
+      "the disk is far too stiff or too soft: volumetric locking (a Poisson "
+      "ratio near 0.5 in plane strain with low 'Degree'), too coarse a mesh, "
+      "a time step or 'Penalty factor' far off";
+
     /// The time series of one impact.
     CsvTable
     time_series_table()
@@ -147,6 +152,7 @@ namespace DiskImpact
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
         .count();
     finish();
+    check_result();
     snapshot();
     if (with_outputs)
       write_outputs();
@@ -156,59 +162,20 @@ namespace DiskImpact
   void
   ImpactSimulation::estimate_collision()
   {
-    const double C = impact.contact_law_constant_value(
-      parameters.material.in_plane_poisson_ratio());
-    try
-      {
-        const auto one_dof    = Reference::one_dof_impact(v0, mass, E2, R, C);
-        contact_time_estimate = one_dof.contact_time;
-        largest_load          = one_dof.max_force / (M_PI * E2 * R);
-        summary.one_dof_contact_time = one_dof.contact_time * c / R;
-        summary.one_dof_delta_max    = one_dof.max_compression / R;
-        summary.one_dof_epsilon      = 1.;
-        // With Kelvin-Voigt viscosity: m xi'' + F + tau xi' F' = 0 (seed
-        // 000, eq. 4 with A = tau), ended when the force returns to zero.
-        const double tau = parameters.material.relaxation_time();
-        if (tau > 0.)
-          {
-            const auto viscous =
-              Reference::collide(mass,
-                                 v0,
-                                 Reference::disk_force_law(E2, R, C),
-                                 tau,
-                                 Reference::EndCriterion::force,
-                                 1e-12);
-            summary.one_dof_epsilon      = viscous.epsilon;
-            summary.one_dof_contact_time = viscous.contact_time * c / R;
-            summary.one_dof_delta_max    = viscous.max_overlap / R;
-          }
-      }
-    catch (const std::domain_error &)
-      {
-        // Beyond the log law's largest compression: no 1-DOF collision.
-        summary.one_dof_contact_time = std::nan("");
-        summary.one_dof_delta_max    = std::nan("");
-        summary.one_dof_epsilon      = std::nan("");
-        const double speed           = impact.velocity();
-        const double delta    = speed * R * std::sqrt(std::log(4. / speed));
-        contact_time_estimate = M_PI * delta / v0;
-        largest_load          = delta / (R * std::log(4. * R / delta));
-      }
+    const auto estimate          = impact.estimate_collision(parameters);
+    contact_time_estimate        = estimate.contact_time;
+    summary.one_dof_contact_time = estimate.one_dof_contact_time;
+    summary.one_dof_delta_max    = estimate.one_dof_delta_max;
+    summary.one_dof_epsilon      = estimate.one_dof_epsilon;
   }
 
   void
   ImpactSimulation::setup_operators()
   {
-    const auto  &geometry = parameters.geometry;
-    const auto  &material = parameters.material;
-    const double largest_half_width =
-      Reference::hertz_half_width(largest_load) * R;
-    geometry.create_triangulation(triangulation);
-    refine_toward_contact(triangulation,
-                          geometry.contact_point(),
-                          largest_half_width,
-                          impact.elements_across_contact,
-                          impact.grading);
+    const auto  &geometry           = parameters.geometry;
+    const auto  &material           = parameters.material;
+    const double largest_half_width = impact.largest_half_width(parameters);
+    impact.create_mesh(parameters, triangulation);
     op.setup(triangulation, geometry, true);
     // No inertia on the edge within the uniformly refined contact zone.
     if (parameters.time_integrator.redistribute_mass())
@@ -350,7 +317,7 @@ namespace DiskImpact
     while (!attempt_step())
       {
         if (++cuts > integrator.max_step_cuts())
-          throw std::runtime_error(
+          throw RunError(
             "impact: Newton's method did not converge at t = " +
             Utilities::to_string(t * c / R) +
             " R/c even with the time step halved " +
@@ -428,9 +395,9 @@ namespace DiskImpact
     if (contact_end >= 0. && t >= contact_end * (1. + impact.margin))
       return true;
     if (t > 20. * contact_time_estimate)
-      throw std::runtime_error(
-        "impact: the contact has not ended after " +
-        Utilities::to_string(20. * contact_time_estimate * c / R) + " R/c");
+      throw RunError("impact: the contact has not ended after " +
+                     Utilities::to_string(20. * contact_time_estimate * c / R) +
+                     " R/c");
     older_force    = previous_force;
     older_time     = previous_time;
     previous_force = mean_force;
@@ -473,6 +440,43 @@ namespace DiskImpact
   }
 
   void
+  ImpactSimulation::check_result() const
+  {
+    // Every value below is the same on all ranks: the error is collective.
+    const auto fail = [&](const std::string &check, const std::string &what) {
+      throw RunError("impact at v = " + approximately(v0 / c, 6) +
+                     " c fails the check '" + check + "': " + what);
+    };
+    const double eps = summary.epsilon;
+    if (!(eps >= 0. && eps <= 1. + 1e-6))
+      fail("0 <= epsilon <= 1",
+           "epsilon = " + approximately(eps, 6) +
+             " is impossible for a passive disk; " + likely_causes);
+    const auto &integrator = parameters.time_integrator;
+    if (integrator.conserves_energy() &&
+        !(summary.energy_error <= integrator.energy_error_tolerance()))
+      fail("energy balance",
+           "the total energy changed by " +
+             approximately(summary.energy_error) +
+             " of the initial energy, more than 'Energy tolerance' = " +
+             approximately(integrator.energy_error_tolerance()) +
+             "; lower 'Newton tolerance' or 'Time step fraction'");
+    // The quasistatic 1-DOF model (log law) is no good reference for the
+    // exponential wall, nor beyond the log law's range (NaN).
+    if (parameters.contact.law_kind() != WallLawKind::penalty)
+      return;
+    for (const auto &[name, fe, one_dof] :
+         std::vector<std::tuple<std::string, double, double>>{
+           {"contact time", summary.contact_time, summary.one_dof_contact_time},
+           {"delta_max", summary.delta_max, summary.one_dof_delta_max}})
+      if (std::isfinite(one_dof) &&
+          !(fe >= 0.5 * one_dof && fe <= 2. * one_dof))
+        fail(name + " within a factor 2 of the 1-DOF model",
+             approximately(fe, 4) + " against " + approximately(one_dof, 4) +
+               " (units R/c and R); " + likely_causes);
+  }
+
+  void
   ImpactSimulation::write_outputs() const
   {
     const std::string &directory = parameters.run.output_directory;
@@ -481,14 +485,15 @@ namespace DiskImpact
       modes = projection->table(u, v, energy_initial, factor);
     const auto final_u = gather_on_root(u, communicator),
                final_v = gather_on_root(v, communicator);
-    if (Utilities::MPI::this_mpi_process(communicator) != 0)
-      return;
-    series.write(directory + "/impact.csv");
-    std::ofstream pvd(directory + "/impact.pvd");
-    DataOutBase::write_pvd_record(pvd, snapshots);
-    if (projection)
-      modes.write(directory + "/mode_energies.csv");
-    write_hdf5(
-      directory + "/impact.h5", summary, series, modes, final_u, final_v);
+    on_root(communicator, [&]() {
+      series.write(directory + "/impact.csv");
+      write_atomically(directory + "/impact.pvd", [&](std::ostream &out) {
+        DataOutBase::write_pvd_record(out, snapshots);
+      });
+      if (projection)
+        modes.write(directory + "/mode_energies.csv");
+      write_hdf5(
+        directory + "/impact.h5", summary, series, modes, final_u, final_v);
+    });
   }
 } // namespace DiskImpact

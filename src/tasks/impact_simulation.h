@@ -70,6 +70,12 @@ namespace DiskImpact
     /// Fill the summary's results after the last step.
     void
     finish();
+    /// Throw a RunError if the result cannot be right: epsilon outside
+    /// [0, 1], the energy balance of an energy-conserving scheme beyond its
+    /// tolerance, contact time or delta_max beyond a factor 2 of the 1-DOF
+    /// model (locking, a far too coarse mesh or soft penalty).
+    void
+    check_result() const;
     void
     write_outputs() const;
 
@@ -89,7 +95,7 @@ namespace DiskImpact
     double R, E2, c, v0, mass, factor;
 
     ImpactSummary summary;
-    double        contact_time_estimate = 0., largest_load = 0.;
+    double        contact_time_estimate = 0.;
 
     dealii::parallel::distributed::Triangulation<2> triangulation;
     ElasticityOperator                              op;

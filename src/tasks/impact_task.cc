@@ -1,6 +1,7 @@
 #include "tasks/impact_task.h"
 
 #include "base/parameters.h"
+#include "base/run_error.h"
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/utilities.h>
@@ -21,9 +22,10 @@ namespace DiskImpact
     pcout << "Impact at v = " << parameters.impact.velocity() << " c"
           << std::endl;
     const ImpactSummary s = parameters.impact.run(parameters, communicator);
-    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+    on_root(communicator, [&]() {
       Impact::write_summary(s,
                             parameters.run.output_directory + "/summary.csv");
+    });
     std::ostringstream out;
     out.precision(8);
     out << "  DoFs " << s.n_dofs << ", time step " << s.time_step

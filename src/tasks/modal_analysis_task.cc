@@ -1,6 +1,7 @@
 #include "tasks/modal_analysis_task.h"
 
 #include "base/parameters.h"
+#include "base/run_error.h"
 #include "modal/modal_analysis.h"
 #include "output/csv_table.h"
 
@@ -21,11 +22,10 @@ namespace DiskImpact
     ConditionalOStream pcout(std::cout,
                              Utilities::MPI::this_mpi_process(communicator) ==
                                0);
-    TimerOutput        timer(communicator,
-                      pcout,
-                      TimerOutput::summary,
-                      TimerOutput::wall_times);
-    ModalAnalysis      analysis(parameters.geometry,
+    // Rank 0's timing table, printed at the end of a run that succeeded
+    // (a timer without communicator prints nothing when an error unwinds).
+    TimerOutput   timer(pcout, TimerOutput::never, TimerOutput::wall_times);
+    ModalAnalysis analysis(parameters.geometry,
                            parameters.material,
                            parameters.finite_element.degree,
                            parameters.modal_solver,
@@ -41,8 +41,9 @@ namespace DiskImpact
       TimerOutput::Scope scope(timer, "output");
       const std::string &directory = parameters.run.output_directory;
       analysis.write_mode_shapes(modes, directory);
-      if (Utilities::MPI::this_mpi_process(communicator) == 0)
+      on_root(communicator, [&]() {
         ModalAnalysis::write_modes_csv(modes, directory + "/modes.csv");
+      });
     }
 
     unsigned int n_rigid   = 0;
@@ -64,23 +65,23 @@ namespace DiskImpact
     while (n_matching < analytic.size() &&
            modes[n_rigid + n_matching].label == analytic[n_matching])
       ++n_matching;
-    if (Utilities::MPI::this_mpi_process(communicator) == 0)
-      {
-        CsvTable table({"index", "omega", "n", "l", "family"});
-        for (unsigned int i = 0; i < analytic.size(); ++i)
-          {
-            table.start_row();
-            table.add(i);
-            table.add(reference.omega(analytic[i]));
-            table.add(analytic[i].n);
-            table.add(analytic[i].l);
-            table.add(to_string(analytic[i].family));
-          }
-        table.write(parameters.run.output_directory + "/analytic_modes.csv");
-      }
+    on_root(communicator, [&]() {
+      CsvTable table({"index", "omega", "n", "l", "family"});
+      for (unsigned int i = 0; i < analytic.size(); ++i)
+        {
+          table.start_row();
+          table.add(i);
+          table.add(reference.omega(analytic[i]));
+          table.add(analytic[i].n);
+          table.add(analytic[i].l);
+          table.add(to_string(analytic[i].family));
+        }
+      table.write(parameters.run.output_directory + "/analytic_modes.csv");
+    });
     pcout << n_rigid << " rigid-body modes, " << modes.size() - n_rigid
           << " elastic modes, largest relative error " << max_error
           << "\nLabels equal to the analytic ordering: first " << n_matching
           << " of " << analytic.size() << " elastic modes" << std::endl;
+    timer.print_summary();
   }
 } // namespace DiskImpact

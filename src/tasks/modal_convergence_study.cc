@@ -1,7 +1,9 @@
 #include "tasks/modal_convergence_study.h"
 
 #include "base/input_error.h"
+#include "base/parameter_lists.h"
 #include "base/parameters.h"
+#include "base/run_error.h"
 #include "modal/modal_analysis.h"
 #include "output/csv_table.h"
 
@@ -18,19 +20,6 @@
 namespace DiskImpact
 {
   using namespace dealii;
-
-  namespace
-  {
-    std::vector<unsigned int>
-    parse_unsigned_list(const std::string &text)
-    {
-      std::vector<unsigned int> values;
-      for (const int v :
-           Utilities::string_to_int(Utilities::split_string_list(text, ',')))
-        values.push_back(v);
-      return values;
-    }
-  } // namespace
 
   void
   ModalConvergenceStudy::declare_parameters(ParameterHandler &prm)
@@ -58,8 +47,8 @@ namespace DiskImpact
   ModalConvergenceStudy::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Modal convergence");
-    degrees           = parse_unsigned_list(prm.get("Degrees"));
-    refinement_levels = parse_unsigned_list(prm.get("Refinement levels"));
+    degrees           = get_count_list(prm, "Degrees");
+    refinement_levels = get_count_list(prm, "Refinement levels");
     n_modes_compared  = prm.get_integer("Modes compared");
     prm.leave_subsection();
     require(std::is_sorted(refinement_levels.begin(),
@@ -71,6 +60,29 @@ namespace DiskImpact
             "ascending");
   }
 
+  Parameters
+  ModalConvergenceStudy::finest(const Parameters &parameters) const
+  {
+    Parameters finest = parameters;
+    finest.finite_element.degree =
+      *std::max_element(degrees.begin(), degrees.end());
+    finest.geometry.set_global_refinements(refinement_levels.back());
+    return finest;
+  }
+
+  Parameters
+  ModalConvergenceStudy::coarsest(const Parameters &parameters) const
+  {
+    Parameters coarsest = parameters;
+    coarsest.finite_element.degree =
+      *std::min_element(degrees.begin(), degrees.end());
+    coarsest.geometry.set_global_refinements(refinement_levels.front());
+    // A full disk has every mode of order n >= 1 twice.
+    coarsest.modal_solver.set_n_elastic_modes(
+      n_modes_compared * (parameters.geometry.is_half_disk() ? 1 : 2));
+    return coarsest;
+  }
+
   void
   ModalConvergenceStudy::run(const Parameters &parameters,
                              MPI_Comm          communicator) const
@@ -78,10 +90,9 @@ namespace DiskImpact
     ConditionalOStream pcout(std::cout,
                              Utilities::MPI::this_mpi_process(communicator) ==
                                0);
-    TimerOutput        timer(communicator,
-                      pcout,
-                      TimerOutput::never,
-                      TimerOutput::wall_times);
+    // Times the modal analyses; a timer without communicator prints nothing
+    // when an error unwinds.
+    TimerOutput timer(pcout, TimerOutput::never, TimerOutput::wall_times);
 
     // The distinct analytic modes to follow, and how many computed modes
     // (with multiplicity) it takes to reach the last of them.
@@ -190,8 +201,9 @@ namespace DiskImpact
           }
       }
     pcout << "Observed orders (expected 2k):\n" << summary.str();
-    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+    on_root(communicator, [&]() {
       table.write(parameters.run.output_directory + "/modal_convergence.csv");
+    });
     timer.print_summary();
   }
 } // namespace DiskImpact

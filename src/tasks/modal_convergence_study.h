@@ -28,6 +28,15 @@ namespace DiskImpact
     void
     run(const Parameters &parameters, MPI_Comm communicator) const;
 
+    /// @p parameters with the study's largest degree and refinement: its
+    /// largest discretization.
+    Parameters
+    finest(const Parameters &parameters) const;
+    /// @p parameters with the study's smallest degree and refinement, and
+    /// the number of elastic modes the modes compared take at least.
+    Parameters
+    coarsest(const Parameters &parameters) const;
+
   private:
     std::vector<unsigned int> degrees;
     std::vector<unsigned int> refinement_levels;

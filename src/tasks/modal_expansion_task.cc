@@ -3,6 +3,7 @@
 #include "base/input_error.h"
 #include "base/parameter_lists.h"
 #include "base/parameters.h"
+#include "base/run_error.h"
 #include "output/csv_table.h"
 
 #include <deal.II/base/conditional_ostream.h>
@@ -278,115 +279,120 @@ namespace DiskImpact
     std::map<double, std::vector<Reference::FreeDiskModeShape>> bases;
     pcout << "    nu2     v/c   alpha      N      epsilon   energy err."
              "   time\n";
-    for (unsigned int i = rank; i < runs.size(); i += n_ranks)
-      {
-        const Run &run = runs[i];
-        if (bases.count(run.nu2) == 0)
-          {
-            const auto start = std::chrono::steady_clock::now();
-            bases[run.nu2] =
-              Reference::symmetric_mode_shapes(run.nu2, largest_n);
-            pcout << "  " << largest_n << " mode shapes for nu2 = " << run.nu2
-                  << ": "
-                  << std::chrono::duration<double>(
-                       std::chrono::steady_clock::now() - start)
-                       .count()
-                  << " s\n";
-          }
-        Reference::ModalImpactConfig config;
-        config.in_plane_poisson_ratio = run.nu2;
-        config.velocity               = run.v;
-        config.alpha                  = run.alpha;
-        config.n_modes                = run.n_modes;
-        config.angular_points         = angular_points;
-        config.steps_per_period       = steps_per_period;
-        config.integrator             = integrator;
-        const auto start              = std::chrono::steady_clock::now();
-        const auto result =
-          Reference::ModalExpansionImpact(config, bases[run.nu2]).run();
-        const double seconds = std::chrono::duration<double>(
-                                 std::chrono::steady_clock::now() - start)
-                                 .count();
-        if (!result.separated)
-          throw std::runtime_error(
-            "modal expansion: the disk did not leave the wall within the "
-            "time limit (nu2 = " +
-            Utilities::to_string(run.nu2) +
-            ", v = " + Utilities::to_string(run.v) +
-            ", alpha = " + Utilities::to_string(run.alpha) +
-            ", N = " + Utilities::to_string(run.n_modes) +
-            "); more 'Steps per period' may help");
-        const auto values = pack(result, seconds, mode_rows);
-        std::copy(values.begin(), values.end(), &fields[per_run * i]);
-        pcout << std::fixed << std::setprecision(3) << std::setw(7) << run.nu2
-              << std::setw(8) << run.v << std::setprecision(0) << std::setw(8)
-              << run.alpha << std::setw(7) << run.n_modes
-              << std::setprecision(7) << std::setw(13) << result.epsilon
-              << std::scientific << std::setprecision(1) << std::setw(12)
-              << result.energy_error << std::fixed << std::setprecision(1)
-              << std::setw(7) << seconds << " s\n"
-              << std::flush;
-      }
+    // A run that fails on one rank fails the task on all.
+    collectively(communicator, [&]() {
+      for (unsigned int i = rank; i < runs.size(); i += n_ranks)
+        {
+          const Run &run = runs[i];
+          if (bases.count(run.nu2) == 0)
+            {
+              const auto start = std::chrono::steady_clock::now();
+              bases[run.nu2] =
+                Reference::symmetric_mode_shapes(run.nu2, largest_n);
+              pcout << "  " << largest_n << " mode shapes for nu2 = " << run.nu2
+                    << ": "
+                    << std::chrono::duration<double>(
+                         std::chrono::steady_clock::now() - start)
+                         .count()
+                    << " s\n";
+            }
+          Reference::ModalImpactConfig config;
+          config.in_plane_poisson_ratio = run.nu2;
+          config.velocity               = run.v;
+          config.alpha                  = run.alpha;
+          config.n_modes                = run.n_modes;
+          config.angular_points         = angular_points;
+          config.steps_per_period       = steps_per_period;
+          config.integrator             = integrator;
+          const auto start              = std::chrono::steady_clock::now();
+          const auto result =
+            Reference::ModalExpansionImpact(config, bases[run.nu2]).run();
+          const double seconds = std::chrono::duration<double>(
+                                   std::chrono::steady_clock::now() - start)
+                                   .count();
+          if (!result.separated)
+            throw std::runtime_error(
+              "modal expansion: the disk did not leave the wall within the "
+              "time limit (nu2 = " +
+              Utilities::to_string(run.nu2) +
+              ", v = " + Utilities::to_string(run.v) +
+              ", alpha = " + Utilities::to_string(run.alpha) +
+              ", N = " + Utilities::to_string(run.n_modes) +
+              "); more 'Steps per period' may help");
+          const auto values = pack(result, seconds, mode_rows);
+          std::copy(values.begin(), values.end(), &fields[per_run * i]);
+          pcout << std::fixed << std::setprecision(3) << std::setw(7) << run.nu2
+                << std::setw(8) << run.v << std::setprecision(0) << std::setw(8)
+                << run.alpha << std::setw(7) << run.n_modes
+                << std::setprecision(7) << std::setw(13) << result.epsilon
+                << std::scientific << std::setprecision(1) << std::setw(12)
+                << result.energy_error << std::fixed << std::setprecision(1)
+                << std::setw(7) << seconds << " s\n"
+                << std::flush;
+        }
+    });
     Utilities::MPI::sum(fields, communicator, fields);
-    if (rank != 0)
-      return;
-
-    const std::string directory = parameters.run.output_directory + "/";
-    CsvTable          table({"poisson_ratio_2d",
-                             "velocity",
-                             "alpha",
-                             "n_modes",
-                             "epsilon",
-                             "contact_time",
-                             "force_max",
-                             "energy_error",
-                             "time_step",
-                             "steps",
-                             "wall_time"});
-    CsvTable          modes({"poisson_ratio_2d",
-                             "velocity",
-                             "alpha",
-                             "n_modes",
-                             "rank",
-                             "n",
-                             "l",
-                             "family",
-                             "omega",
-                             "energy_fraction",
-                             "average_energy_fraction"});
-    CaseMap           by_case; // (nu2, v, alpha) -> (N, epsilon)
-    for (unsigned int i = 0; i < runs.size(); ++i)
-      {
-        const Run    &run = runs[i];
-        const double *f   = &fields[per_run * i];
-        table.start_row();
-        for (const double value : {run.nu2, run.v, run.alpha})
-          table.add(value);
-        table.add(run.n_modes);
-        for (unsigned int k = 0; k < n_run_fields; ++k)
-          table.add(f[k]);
-        by_case[{run.nu2, run.v, run.alpha}].emplace_back(run.n_modes, f[0]);
-        if (run.n_modes != largest_n)
-          continue;
-        for (unsigned int m = 0; m < mode_rows; ++m)
-          {
-            const double *mode = f + n_run_fields + n_mode_fields * m;
-            if (mode[0] < 0.)
-              break;
-            modes.start_row();
-            for (const double value : {run.nu2, run.v, run.alpha})
-              modes.add(value);
-            modes.add(run.n_modes);
-            modes.add(m + 1);
-            modes.add(static_cast<unsigned int>(mode[0]));
-            modes.add(static_cast<unsigned int>(mode[1]));
-            modes.add(to_string(families[static_cast<unsigned int>(mode[2])]));
-            for (unsigned int k = 3; k < n_mode_fields; ++k)
-              modes.add(mode[k]);
-          }
-      }
-    table.write(directory + "modal_expansion.csv");
-    modes.write(directory + "modal_expansion_modes.csv");
-    write_extrapolation(by_case, directory + "modal_extrapolation.csv", pcout);
+    on_root(communicator, [&]() {
+      const std::string directory = parameters.run.output_directory + "/";
+      CsvTable          table({"poisson_ratio_2d",
+                               "velocity",
+                               "alpha",
+                               "n_modes",
+                               "epsilon",
+                               "contact_time",
+                               "force_max",
+                               "energy_error",
+                               "time_step",
+                               "steps",
+                               "wall_time"});
+      CsvTable          modes({"poisson_ratio_2d",
+                               "velocity",
+                               "alpha",
+                               "n_modes",
+                               "rank",
+                               "n",
+                               "l",
+                               "family",
+                               "omega",
+                               "energy_fraction",
+                               "average_energy_fraction"});
+      CaseMap           by_case; // (nu2, v, alpha) -> (N, epsilon)
+      for (unsigned int i = 0; i < runs.size(); ++i)
+        {
+          const Run    &run = runs[i];
+          const double *f   = &fields[per_run * i];
+          table.start_row();
+          for (const double value : {run.nu2, run.v, run.alpha})
+            table.add(value);
+          table.add(run.n_modes);
+          for (unsigned int k = 0; k < n_run_fields; ++k)
+            table.add(f[k]);
+          by_case[{run.nu2, run.v, run.alpha}].emplace_back(run.n_modes, f[0]);
+          if (run.n_modes != largest_n)
+            continue;
+          for (unsigned int m = 0; m < mode_rows; ++m)
+            {
+              const double *mode = f + n_run_fields + n_mode_fields * m;
+              if (mode[0] < 0.)
+                break;
+              modes.start_row();
+              for (const double value : {run.nu2, run.v, run.alpha})
+                modes.add(value);
+              modes.add(run.n_modes);
+              modes.add(m + 1);
+              modes.add(static_cast<unsigned int>(mode[0]));
+              modes.add(static_cast<unsigned int>(mode[1]));
+              modes.add(
+                to_string(families[static_cast<unsigned int>(mode[2])]));
+              for (unsigned int k = 3; k < n_mode_fields; ++k)
+                modes.add(mode[k]);
+            }
+        }
+      table.write(directory + "modal_expansion.csv");
+      modes.write(directory + "modal_expansion_modes.csv");
+      write_extrapolation(by_case,
+                          directory + "modal_extrapolation.csv",
+                          pcout);
+    });
   }
 } // namespace DiskImpact

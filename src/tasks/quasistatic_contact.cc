@@ -3,8 +3,10 @@
 #include "base/input_error.h"
 #include "base/parameter_lists.h"
 #include "base/parameters.h"
+#include "base/run_error.h"
 #include "contact/contact_operator.h"
 #include "elasticity/elasticity_operator.h"
+#include "output/atomic_file.h"
 #include "output/csv_table.h"
 #include "output/state_output.h"
 #include "reference/log_contact_law.h"
@@ -23,6 +25,7 @@
 
 #include <deal.II/numerics/vector_tools.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -53,8 +56,6 @@ namespace DiskImpact
     public:
       ContactProblem(const Parameters &parameters,
                      double            load,
-                     unsigned int      n_across,
-                     double            grading,
                      MPI_Comm          communicator);
 
       /// Newton from a rigid translation toward the wall by
@@ -92,11 +93,9 @@ namespace DiskImpact
       double                                  h_contact  = 0.;
     };
 
-    ContactProblem::ContactProblem(const Parameters  &parameters,
-                                   const double       load,
-                                   const unsigned int n_across,
-                                   const double       grading,
-                                   MPI_Comm           communicator)
+    ContactProblem::ContactProblem(const Parameters &parameters,
+                                   const double      load,
+                                   MPI_Comm          communicator)
         : parameters(parameters)
         , load(load)
         , total_force(load * M_PI *
@@ -107,14 +106,10 @@ namespace DiskImpact
                         Triangulation<2>::limit_level_difference_at_vertices)
         , op(parameters.finite_element.degree)
     {
-      const auto  &geometry = parameters.geometry;
-      const double R        = geometry.radius();
-      geometry.create_triangulation(triangulation);
-      refine_toward_contact(triangulation,
-                            geometry.contact_point(),
-                            Reference::hertz_half_width(load) * R,
-                            n_across,
-                            grading);
+      const auto &geometry = parameters.geometry;
+      parameters.quasistatic_contact.create_mesh(parameters,
+                                                 load,
+                                                 triangulation);
       op.setup(triangulation, geometry, true);
       op.assemble(parameters.material);
 
@@ -224,7 +219,7 @@ namespace DiskImpact
         }
       if (r.l2_norm() <= tolerance * force_scale)
         return iterations;
-      throw std::runtime_error(
+      throw RunError(
         "quasistatic contact: Newton's method did not converge for load " +
         Utilities::to_string(load) + " in " + std::to_string(max_iterations) +
         " iterations (relative residual " +
@@ -328,6 +323,28 @@ namespace DiskImpact
                 Utilities::to_string(load));
   }
 
+  double
+  QuasistaticContact::largest_load() const
+  {
+    return *std::max_element(loads.begin(), loads.end());
+  }
+
+  void
+  QuasistaticContact::create_mesh(const Parameters &parameters,
+                                  const double      load,
+                                  Triangulation<2> &triangulation,
+                                  const double      max_cells) const
+  {
+    const auto &geometry = parameters.geometry;
+    geometry.create_triangulation(triangulation, max_cells);
+    refine_toward_contact(triangulation,
+                          geometry.contact_point(),
+                          Reference::hertz_half_width(load) * geometry.radius(),
+                          elements_across_contact,
+                          grading,
+                          max_cells);
+  }
+
   void
   QuasistaticContact::run(const Parameters &parameters,
                           MPI_Comm          communicator) const
@@ -335,7 +352,6 @@ namespace DiskImpact
     ConditionalOStream pcout(std::cout,
                              Utilities::MPI::this_mpi_process(communicator) ==
                                0);
-    const bool root = Utilities::MPI::this_mpi_process(communicator) == 0;
     const std::string &directory = parameters.run.output_directory;
     const double       nu2       = parameters.material.in_plane_poisson_ratio();
 
@@ -360,8 +376,7 @@ namespace DiskImpact
              "force bal.   penetration  Newton   DoFs\n";
     for (unsigned int i = 0; i < loads.size(); ++i)
       {
-        ContactProblem problem(
-          parameters, loads[i], elements_across_contact, grading, communicator);
+        ContactProblem problem(parameters, loads[i], communicator);
         // Start from the rigid translation whose overlap with the wall is
         // as wide as the Hertz contact: depth a^2 / (2 R) = 2 x R.
         problem.solve(2. * loads[i], newton_tolerance, max_newton_iterations);
@@ -415,12 +430,12 @@ namespace DiskImpact
         pcout << line.str() << std::flush;
       }
     pcout << "Seed 001, eq. 57: C = -1 - nu2 = " << -1. - nu2 << std::endl;
-    if (root)
-      {
-        law.write(directory + "/contact_law.csv");
-        profile.write(directory + "/pressure_profile.csv");
-        std::ofstream pvd(directory + "/contact.pvd");
-        DataOutBase::write_pvd_record(pvd, records);
-      }
+    on_root(communicator, [&]() {
+      law.write(directory + "/contact_law.csv");
+      profile.write(directory + "/pressure_profile.csv");
+      write_atomically(directory + "/contact.pvd", [&](std::ostream &out) {
+        DataOutBase::write_pvd_record(out, records);
+      });
+    });
   }
 } // namespace DiskImpact

@@ -2,8 +2,11 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <deal.II/grid/tria.h>
+
 #include <mpi.h>
 
+#include <limits>
 #include <vector>
 
 namespace DiskImpact
@@ -49,6 +52,19 @@ namespace DiskImpact
 
     void
     run(const Parameters &parameters, MPI_Comm communicator) const;
+
+    /// The largest of the 'Loads'.
+    double
+    largest_load() const;
+
+    /// The mesh for @p load, graded toward the contact point; throws an
+    /// InputError if it would exceed about @p max_cells cells.
+    void
+    create_mesh(
+      const Parameters         &parameters,
+      double                    load,
+      dealii::Triangulation<2> &triangulation,
+      double max_cells = std::numeric_limits<double>::infinity()) const;
 
   private:
     std::vector<double> loads;

@@ -3,6 +3,7 @@
 #include "base/input_error.h"
 #include "base/parameter_lists.h"
 #include "base/parameters.h"
+#include "base/run_error.h"
 #include "output/csv_table.h"
 #include "reference/collision_ode.h"
 #include "reference/linear_dashpot.h"
@@ -162,16 +163,22 @@ namespace DiskImpact
     for (const double v : velocities)
       require(Reference::schwager_scaled_velocity(v, law_constant) <
                 Reference::schwager_maximum_scaled_velocity(),
-              "Reference models: v/c = " + std::to_string(v) +
-                " is too fast for the log law (seed 000, eq. 50)");
+              "Reference models: an entry of 'Velocities', v/c = " +
+                approximately(v, 6) +
+                ", is too fast for the log law (seed 000, eq. 50)");
   }
 
   void
   ReferenceModels::run(const Parameters &parameters,
                        MPI_Comm          communicator) const
   {
-    if (Utilities::MPI::this_mpi_process(communicator) != 0)
-      return;
+    // The models are cheap: rank 0 computes and writes them all.
+    on_root(communicator, [&]() { tabulate(parameters); });
+  }
+
+  void
+  ReferenceModels::tabulate(const Parameters &parameters) const
+  {
     const std::string directory = parameters.run.output_directory + "/";
     switch (model)
       {

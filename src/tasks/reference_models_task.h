@@ -55,6 +55,9 @@ namespace DiskImpact
     run(const Parameters &parameters, MPI_Comm communicator) const;
 
   private:
+    /// Compute the chosen model and write its table (on this rank).
+    void
+                              tabulate(const Parameters &parameters) const;
     ReferenceModel            model = ReferenceModel::disk;
     std::vector<double>       velocities;
     std::vector<double>       alphas;

@@ -1,19 +1,20 @@
 #include "tasks/sweep_task.h"
 
 #include "base/parameters.h"
+#include "base/run_error.h"
 #include "output/csv_table.h"
+#include "output/file_lock.h"
 #include "output/hdf5_output.h"
 
-#include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
 #include <chrono>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <iomanip>
 #include <iostream>
-#include <map>
-#include <set>
 #include <sstream>
 
 namespace DiskImpact
@@ -22,6 +23,8 @@ namespace DiskImpact
 
   namespace
   {
+    /// The numeric columns of restitution.csv; a last column 'status' says
+    /// whether the row's point is 'pending', 'done' or 'failed'.
     const std::vector<std::string> column_names{"velocity",
                                                 "poisson_ratio",
                                                 "epsilon",
@@ -38,37 +41,86 @@ namespace DiskImpact
                                                 "relaxation_time",
                                                 "alpha",
                                                 "one_dof_epsilon"};
+    /// Positions of the columns that identify a point.
+    constexpr unsigned int velocity_column = 0, poisson_column = 1,
+                           relaxation_column = 13;
+
+    /// The entries that choose the points (and whether to resume), which a
+    /// resumed sweep may change.
+    const std::vector<std::pair<std::string, std::string>> point_entries{
+      {"", "Output directory"},
+      {"Impact", "Velocities"},
+      {"Impact", "Poisson ratios"},
+      {"Impact", "Relaxation times"},
+      {"Impact", "Resume"}};
 
     using Row = std::vector<double>;
 
-    /// One point of the sweep: Poisson ratio and relaxation time (NaN: the
-    /// material's), velocity.
+    /// One point of the sweep: its parameters and its row.
     struct Point
     {
-      double nu;
-      double tau;
-      double v;
+      Parameters  parameters;
+      Row         row;
+      std::string status = "pending";
     };
 
-    /// One point of the sweep on this rank alone: the row of
-    /// restitution.csv, epsilon and its error from the convergence study
-    /// if 'Error estimate' is set.
-    Row
-    run_point(const Parameters &parameters, const Point &where)
+    /// The sweep's points in the order of the table: Poisson ratios, then
+    /// relaxation times, then velocities (empty lists: the material's).
+    std::vector<Point>
+    sweep_points(const Parameters &parameters)
     {
-      Parameters point = parameters;
-      if (!std::isnan(where.nu))
-        point.material = point.material.with_poisson_ratio(where.nu);
-      if (!std::isnan(where.tau))
-        point.material = point.material.with_relaxation_time(where.tau);
-      point.impact.set_velocity(where.v);
-      const auto       start = std::chrono::steady_clock::now();
-      ConvergedEpsilon result;
+      auto or_material = [](std::vector<double> values) {
+        if (values.empty())
+          values.push_back(std::nan(""));
+        return values;
+      };
+      std::vector<Point> points;
+      for (const double nu : or_material(parameters.impact.poisson_ratios()))
+        for (const double tau :
+             or_material(parameters.impact.relaxation_times()))
+          for (const double v : parameters.impact.velocities())
+            {
+              Point point{parameters, Row(column_names.size(), std::nan(""))};
+              auto &material = point.parameters.material;
+              if (!std::isnan(nu))
+                material = material.with_poisson_ratio(nu);
+              if (!std::isnan(tau))
+                material = material.with_relaxation_time(tau);
+              point.parameters.impact.set_velocity(v);
+              point.row[velocity_column]   = v;
+              point.row[poisson_column]    = material.poisson_ratio();
+              point.row[8]                 = material.in_plane_poisson_ratio();
+              point.row[relaxation_column] = material.relaxation_time();
+              points.push_back(std::move(point));
+            }
+      return points;
+    }
+
+    /// Whether two rows are of the same point (the table keeps 15 digits).
+    bool
+    same_point(const Row &a, const Row &b)
+    {
+      for (const unsigned int c :
+           {velocity_column, poisson_column, relaxation_column})
+        if (std::abs(a[c] - b[c]) > 1e-12 * std::max(1., std::abs(b[c])))
+          return false;
+      return true;
+    }
+
+    /// Run one point on this rank alone: its row of restitution.csv, epsilon
+    /// and its error from the convergence study if 'Error estimate' is set.
+    Row
+    run_point(const Point &point)
+    {
+      const Parameters &parameters = point.parameters;
+      const auto        start      = std::chrono::steady_clock::now();
+      ConvergedEpsilon  result;
       if (parameters.impact.estimate_errors())
-        result = point.impact_convergence.run(point, MPI_COMM_SELF, nullptr);
+        result =
+          parameters.impact_convergence.run(parameters, MPI_COMM_SELF, nullptr);
       else
         {
-          result.base    = point.impact.run(point, MPI_COMM_SELF, false);
+          result.base = parameters.impact.run(parameters, MPI_COMM_SELF, false);
           result.epsilon = result.base.epsilon;
           result.error   = std::nan("");
         }
@@ -76,26 +128,28 @@ namespace DiskImpact
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
           .count();
       const ImpactSummary &s = result.base;
-      return {where.v,
-              point.material.poisson_ratio(),
-              result.epsilon,
-              result.error,
-              s.contact_time,
-              s.delta_max,
-              s.force_max,
-              s.energy_error,
-              point.material.in_plane_poisson_ratio(),
-              s.epsilon,
-              static_cast<double>(s.steps),
-              static_cast<double>(s.n_dofs),
-              wall_time,
-              point.material.relaxation_time(),
-              s.schwager_alpha,
-              s.one_dof_epsilon};
+      Row                  row{point.row};
+      for (const auto &[column, value] :
+           std::vector<std::pair<unsigned int, double>>{
+             {2, result.epsilon},
+             {3, result.error},
+             {4, s.contact_time},
+             {5, s.delta_max},
+             {6, s.force_max},
+             {7, s.energy_error},
+             {9, s.epsilon},
+             {10, static_cast<double>(s.steps)},
+             {11, static_cast<double>(s.n_dofs)},
+             {12, wall_time},
+             {14, s.schwager_alpha},
+             {15, s.one_dof_epsilon}})
+        row[column] = value;
+      return row;
     }
 
+    /// A point's row as a line of the terminal table.
     std::string
-    describe(const std::vector<double> &row)
+    describe(const Row &row)
     {
       std::ostringstream line;
       line << std::fixed << std::setprecision(4) << std::setw(7) << row[0]
@@ -105,12 +159,145 @@ namespace DiskImpact
            << std::setprecision(4) << std::setw(12) << row[4] << std::setw(7)
            << row[14] << std::scientific << std::setprecision(1)
            << std::setw(11) << row[7] << std::fixed << std::setw(8) << row[12]
-           << " s\n";
+           << " s";
       return line.str();
     }
 
-    /// The index of the next point to run, shared by all ranks: an integer
-    /// on rank 0, fetched and incremented atomically (MPI one-sided).
+    /**
+     * restitution.csv and restitution.h5: one row per point with its
+     * status. Each rank that finishes a point writes both, one rank at a
+     * time (a lock file), from the rows on disk and its own.
+     */
+    class SweepTable
+    {
+    public:
+      SweepTable(const std::string &directory, std::vector<Point> points)
+          : csv_file(directory + "/restitution.csv")
+          , h5_file(directory + "/restitution.h5")
+          , lock_file(directory + "/.restitution.lock")
+          , points(std::move(points))
+      {
+      }
+
+      /// Take the finished rows (with @p failed_too also the failed ones)
+      /// of the table on disk whose points are ours.
+      void
+      keep_finished_rows(const bool failed_too = false)
+      {
+        if (!std::filesystem::exists(csv_file))
+          return;
+        const CsvTable old = CsvTable::read(csv_file);
+        check_columns(old);
+        const auto                       status = old.text_column("status");
+        std::vector<std::vector<double>> columns;
+        for (const auto &name : column_names)
+          columns.push_back(old.column(name));
+        for (unsigned int r = 0; r < old.n_rows(); ++r)
+          {
+            if (status[r] != "done" && !(failed_too && status[r] == "failed"))
+              continue;
+            Row row;
+            for (const auto &column : columns)
+              row.push_back(column[r]);
+            for (auto &point : points)
+              if (same_point(point.row, row))
+                {
+                  point.row    = row;
+                  point.status = status[r];
+                }
+          }
+      }
+
+      /// Record @p row (status @p status) of point @p index and write the
+      /// table with the other ranks' rows as they are on disk; returns the
+      /// number of points done.
+      unsigned int
+      record(const unsigned int index,
+             const Row         &row,
+             const std::string &status)
+      {
+        const FileLock lock(lock_file);
+        keep_finished_rows(true);
+        points[index].row    = row;
+        points[index].status = status;
+        write();
+        return n_done();
+      }
+
+      /// Write both files as the rows are now.
+      void
+      write() const
+      {
+        CsvTable table(column_names);
+        CsvTable with_status([]() {
+          auto names = column_names;
+          names.push_back("status");
+          return names;
+        }());
+        for (const auto &point : points)
+          {
+            table.start_row();
+            with_status.start_row();
+            for (const double value : point.row)
+              {
+                table.add(value);
+                with_status.add(value);
+              }
+            with_status.add(point.status);
+          }
+        with_status.write(csv_file);
+        Hdf5Output h5(h5_file);
+        h5.write_table("restitution", table);
+        std::vector<double> done;
+        for (const auto &point : points)
+          done.push_back(point.status == "done" ? 1. : 0.);
+        h5.write_vector("restitution", "done", done);
+        h5.set_attribute("restitution", "points_done", 1. * n_done());
+        h5.set_attribute("restitution", "points_total", 1. * points.size());
+        h5.set_attribute("restitution",
+                         "complete",
+                         n_done() == points.size() ? 1. : 0.);
+        h5.set_attribute("/",
+                         "units",
+                         "velocity in c = sqrt(E2/rho), contact_time in R/c, "
+                         "delta_max in R, force_max in E2 R, relaxation_time "
+                         "in R/c, wall_time in s; the rest dimensionless");
+        h5.finish();
+      }
+
+      unsigned int
+      n_done() const
+      {
+        return std::count_if(points.begin(), points.end(), [](const Point &p) {
+          return p.status == "done";
+        });
+      }
+
+      const std::vector<Point> &
+      get_points() const
+      {
+        return points;
+      }
+
+    private:
+      void
+      check_columns(const CsvTable &table) const
+      {
+        auto expected = column_names;
+        expected.push_back("status");
+        if (table.column_names() != expected)
+          throw std::runtime_error(csv_file +
+                                   " has other columns than a sweep writes: "
+                                   "set 'Resume = false' to start afresh");
+      }
+
+      const std::string  csv_file, h5_file, lock_file;
+      std::vector<Point> points;
+    };
+
+    /// The index of the next pending point to run, shared by all ranks: an
+    /// integer on rank 0, fetched and incremented atomically (MPI
+    /// one-sided).
     class NextPointCounter
     {
     public:
@@ -147,105 +334,199 @@ namespace DiskImpact
       MPI_Win window;
     };
 
-    /// Rows sent by the other ranks (tag = point index); @p wait: block
-    /// for at least one.
-    void
-    receive_rows(MPI_Comm            communicator,
-                 const bool          wait,
-                 std::map<int, Row> &rows)
+    /// A parameter file's parameters as text, the point entries blanked.
+    std::string
+    without_point_entries(const std::string &prm_text)
     {
-      int        arrived = wait ? 1 : 0;
-      MPI_Status status;
-      if (!wait)
-        MPI_Iprobe(
-          MPI_ANY_SOURCE, MPI_ANY_TAG, communicator, &arrived, &status);
-      while (arrived)
+      ParameterHandler prm;
+      Parameters::declare_parameters(prm);
+      prm.parse_input_from_string(prm_text);
+      for (const auto &[subsection, entry] : point_entries)
         {
-          Row row(column_names.size());
-          MPI_Recv(row.data(),
-                   row.size(),
-                   MPI_DOUBLE,
-                   MPI_ANY_SOURCE,
-                   MPI_ANY_TAG,
-                   communicator,
-                   &status);
-          rows[status.MPI_TAG] = row;
-          MPI_Iprobe(
-            MPI_ANY_SOURCE, MPI_ANY_TAG, communicator, &arrived, &status);
+          if (!subsection.empty())
+            prm.enter_subsection(subsection);
+          prm.set(entry, entry == "Resume" ? "true" : "");
+          if (!subsection.empty())
+            prm.leave_subsection();
         }
+      std::ostringstream text;
+      prm.print_parameters(text,
+                           ParameterHandler::OutputStyle(
+                             ParameterHandler::ShortPRM |
+                             ParameterHandler::KeepDeclarationOrder));
+      return text.str();
     }
 
-    /// restitution.csv and restitution.h5 (@p filename without suffix) with
-    /// the rows done so far, in the order of the points; print the rows not
-    /// in @p printed yet.
-    void
-    write_rows(const std::map<int, Row> &rows,
-               const std::string        &filename,
-               std::set<int>            &printed,
-               ConditionalOStream       &out)
+    /// The first entry in which two parameter texts differ, as
+    /// "Subsection: entry = A there, B here"; empty if none does.
+    std::string
+    first_difference(const std::string &there, const std::string &here)
     {
-      CsvTable table(column_names);
-      for (const auto &[index, row] : rows)
+      std::istringstream a(there), b(here);
+      std::string        line_a, line_b, subsection;
+      while (std::getline(a, line_a) && std::getline(b, line_b))
         {
-          table.start_row();
-          for (const double value : row)
-            table.add(value);
-          if (printed.insert(index).second)
-            out << describe(row) << std::flush;
+          const auto first = line_a.find_first_not_of(' ');
+          if (first != std::string::npos &&
+              line_a.compare(first, 11, "subsection ") == 0)
+            subsection = line_a.substr(first + 11);
+          if (line_a != line_b)
+            {
+              auto value = [](const std::string &line) {
+                const auto eq = line.find('=');
+                return eq == std::string::npos ? line : line.substr(eq + 2);
+              };
+              const auto eq   = line_a.find('=');
+              const auto name = line_a.substr(line_a.find("set ") + 4,
+                                              eq == std::string::npos ?
+                                                0 :
+                                                eq - line_a.find("set ") - 5);
+              return (subsection.empty() ? "" : subsection + ": ") + name +
+                     " = " + value(line_a) + " there, " + value(line_b) +
+                     " here";
+            }
         }
-      table.write(filename + ".csv");
-      Hdf5Output h5(filename + ".h5");
-      h5.write_table("restitution", table);
-      h5.finish();
+      return "";
     }
   } // namespace
 
+  std::vector<std::string>
+  sweep_result_files()
+  {
+    return {"restitution.csv", "restitution.h5"};
+  }
+
+  bool
+  sweep_resumes(const Parameters       &parameters,
+                const ParameterHandler &prm,
+                MPI_Comm                communicator)
+  {
+    const std::string &directory = parameters.run.output_directory;
+    bool               resumes   = false;
+    collectively(communicator, [&]() {
+      if (!parameters.impact.resume() ||
+          !std::filesystem::exists(directory + "/restitution.csv"))
+        return;
+      const auto refuse = [&](const std::string &why) {
+        throw InputError("output directory '" + directory +
+                         "' holds a sweep of other parameters (" + why +
+                         "); set 'Resume = false' in subsection Impact to "
+                         "start afresh, or choose another 'Output "
+                         "directory'");
+      };
+      std::ifstream     old_file(directory + "/used_parameters.prm");
+      std::stringstream old_text;
+      old_text << old_file.rdbuf();
+      std::ostringstream new_text;
+      prm.print_parameters(new_text, ParameterHandler::ShortPRM);
+      std::string there;
+      try
+        {
+          there = without_point_entries(old_text.str());
+        }
+      catch (const std::exception &)
+        {
+          refuse("its used_parameters.prm is missing or unreadable");
+        }
+      const std::string difference =
+        first_difference(there, without_point_entries(new_text.str()));
+      if (!difference.empty())
+        refuse(difference);
+      resumes = true;
+    });
+    return resumes;
+  }
+
   void
-  run_sweep(const Parameters &parameters, MPI_Comm communicator)
+  run_sweep(const Parameters &parameters,
+            const bool        resume,
+            MPI_Comm          communicator)
   {
     const unsigned int rank = Utilities::MPI::this_mpi_process(communicator);
-    ConditionalOStream pcout(std::cout, rank == 0);
-
-    // Empty lists: the material's value (NaN).
-    auto or_material = [](std::vector<double> values) {
-      if (values.empty())
-        values.push_back(std::nan(""));
-      return values;
-    };
-    std::vector<Point> points;
-    for (const double nu : or_material(parameters.impact.poisson_ratios()))
-      for (const double tau : or_material(parameters.impact.relaxation_times()))
-        for (const double v : parameters.impact.velocities())
-          points.push_back({nu, tau, v});
-
-    pcout << "   v/c      nu    nu2       epsilon     error      contact "
-             "time  alpha  energy err.   time\n";
-    // Each rank takes the next point when it is free (a counter on rank 0,
-    // MPI one-sided), sends its row to rank 0, which rewrites
-    // restitution.csv whenever it has new rows.
-    NextPointCounter   counter(communicator);
-    std::map<int, Row> rows;
-    std::set<int>      printed;
-    const int          n_points = points.size();
-    const std::string  filename =
-      parameters.run.output_directory + "/restitution";
-    for (int i = counter.next(); i < n_points; i = counter.next())
-      {
-        Row row = run_point(parameters, points[i]);
-        if (rank == 0)
-          {
-            rows[i] = row;
-            receive_rows(communicator, false, rows);
-            write_rows(rows, filename, printed, pcout);
-          }
-        else
-          MPI_Send(row.data(), row.size(), MPI_DOUBLE, 0, i, communicator);
-      }
+    SweepTable table(parameters.run.output_directory, sweep_points(parameters));
+    on_root(communicator, [&]() {
+      if (resume)
+        table.keep_finished_rows();
+      table.write();
+    });
+    const auto      &points = table.get_points();
+    std::vector<int> pending;
+    for (unsigned int i = 0; i < points.size(); ++i)
+      if (points[i].status != "done")
+        pending.push_back(i);
+    const unsigned int n_total = points.size();
+    const unsigned int n_kept  = n_total - pending.size();
     if (rank == 0)
-      while (static_cast<int>(rows.size()) < n_points)
-        {
-          receive_rows(communicator, true, rows);
-          write_rows(rows, filename, printed, pcout);
-        }
+      std::cout << "Sweep of " << n_total << " points"
+                << (n_kept > 0 ? ", " + std::to_string(n_kept) +
+                                   " kept from the earlier run" :
+                                 "")
+                << "\n   v/c      nu    nu2       epsilon     error      "
+                   "contact time  alpha  energy err.   time\n"
+                << std::flush;
+
+    // Each rank takes the next pending point when it is free (a counter on
+    // rank 0, MPI one-sided) and records its row itself.
+    NextPointCounter counter(communicator);
+    const auto       start = std::chrono::steady_clock::now();
+    std::string      failure;
+    unsigned int     n_failed = 0;
+    for (int next = counter.next(); next < static_cast<int>(pending.size());
+         next     = counter.next())
+      {
+            const unsigned int index = pending[next];
+            Row                row   = points[index].row;
+            std::string        note;
+            try
+          {
+                row = run_point(points[index]);
+          }
+            catch (const std::exception &e)
+          {
+                note = std::string(" failed: ") + e.what();
+                if (n_failed++ == 0)
+              failure = "v/c = " + Utilities::to_string(row[0]) +
+                        ", nu = " + Utilities::to_string(row[1]) +
+                        ", tau = " + Utilities::to_string(row[13]) + ": " +
+                        e.what();
+          }
+            unsigned int n_done = 0;
+            try
+          {
+                n_done = table.record(index, row, note.empty() ? "done" : "failed");
+          }
+            catch (const std::exception &e)
+          {
+                // The table cannot be written: take no more points.
+            failure = e.what();
+            ++n_failed;
+            break;
+          }
+        // Progress: one line, written at once, whichever rank prints it.
+        const double elapsed = std::chrono::duration<double>(
+                                 std::chrono::steady_clock::now() - start)
+                                     .count();
+            std::ostringstream line;
+            line << describe(row) << note << "  [" << n_done << "/" << n_total;
+            if (n_done > n_kept && n_done < n_total)
+          line << ", about "
+               << std::lround(elapsed / (n_done - n_kept) * (n_total - n_done))
+               << " s left";
+        line << "]\n";
+            std::cout << line.str() << std::flush;
+      }
+
+    // Every rank is done: a failure of any rank ends the run with an error.
+    const unsigned int total_failed =
+      Utilities::MPI::sum(n_failed, communicator);
+    std::string first;
+    for (const auto &f : Utilities::MPI::all_gather(communicator, failure))
+      if (first.empty())
+        first = f;
+    if (total_failed > 0)
+      throw RunError("sweep incomplete, " + std::to_string(total_failed) +
+                     " point(s) failed (first: " + first +
+                     "); the finished points are kept in restitution.csv: "
+                     "rerun to compute the rest");
   }
 } // namespace DiskImpact

@@ -1,19 +1,47 @@
 #pragma once
 
+#include <deal.II/base/parameter_handler.h>
+
 #include <mpi.h>
+
+#include <string>
+#include <vector>
 
 namespace DiskImpact
 {
   struct Parameters;
 
+  /// The result files of task 'sweep' (restitution.csv and .h5).
+  std::vector<std::string>
+  sweep_result_files();
+
   /**
-   * Task 'sweep': one impact per velocity (and Poisson ratio) of subsection
-   * Impact, with 'Error estimate' each a convergence study
-   * (ImpactConvergenceStudy: epsilon extrapolated, with its error bar), to
-   * restitution.csv and restitution.h5. The points are shared out among
-   * the MPI ranks, each taking the next point when it is free and running
-   * it alone; rank 0 rewrites the table whenever it has new rows.
+   * Whether a sweep continues an earlier one in its output directory: with
+   * 'Resume' set and a table of finished points there. Throws an InputError
+   * if that table came from other parameters (everything but the lists of
+   * points, 'Resume' and the output directory counts). Collective.
+   */
+  bool
+  sweep_resumes(const Parameters               &parameters,
+                const dealii::ParameterHandler &prm,
+                MPI_Comm                        communicator);
+
+  /**
+   * Task 'sweep': one impact per point (velocity, Poisson ratio, relaxation
+   * time of subsection Impact), with 'Error estimate' each a convergence
+   * study (ImpactConvergenceStudy: epsilon extrapolated, with its error
+   * bar). The points are shared out among the MPI ranks, each taking the
+   * next point when it is free and running it alone.
+   *
+   * restitution.csv has one row per point from the start, its 'status'
+   * 'pending', 'done' or 'failed'; restitution.h5 the same columns and the
+   * attributes 'complete', 'points_done' and 'points_total'. A rank that
+   * finishes a point writes both files at once (one rank at a time, under
+   * a file lock), and prints the row with the progress. With @p resume the
+   * finished rows of the earlier run are kept and only the others run. A
+   * point that fails is marked 'failed' and the others go on; the run then
+   * ends with an error naming it.
    */
   void
-  run_sweep(const Parameters &parameters, MPI_Comm communicator);
+  run_sweep(const Parameters &parameters, bool resume, MPI_Comm communicator);
 } // namespace DiskImpact
