@@ -444,11 +444,12 @@ namespace DiskImpact
   {
     const unsigned int rank = Utilities::MPI::this_mpi_process(communicator);
     SweepTable table(parameters.run.output_directory, sweep_points(parameters));
-    on_root(communicator, [&]() {
+    // Every rank reads the kept rows: all must agree on the pending points.
+    collectively(communicator, [&]() {
       if (resume)
         table.keep_finished_rows();
-      table.write();
     });
+    on_root(communicator, [&]() { table.write(); });
     const auto      &points = table.get_points();
     std::vector<int> pending;
     for (unsigned int i = 0; i < points.size(); ++i)
