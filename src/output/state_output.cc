@@ -28,6 +28,8 @@ namespace DiskImpact
         2, DataComponentInterpretation::component_is_part_of_vector));
     const StressPostprocessor stress(material);
     data_out.add_data_vector(ghosted_u, stress);
+    const StressScalarsPostprocessor stress_scalars(material);
+    data_out.add_data_vector(ghosted_u, stress_scalars);
     data_out.build_patches(op.get_mapping(),
                            op.degree(),
                            DataOut<2>::curved_inner_cells);

@@ -10,9 +10,11 @@ namespace DiskImpact
   class Material;
 
   /**
-   * Write a displacement field and its stress (deal.II DataOut, curved
-   * patches of the element degree) as DIRECTORY/BASENAME_NNN.pvtu with one
-   * .vtu per rank; returns the .pvtu's name relative to @p directory.
+   * Write a displacement field, its stress tensor and the scalar stress
+   * measures (von Mises, principal stresses, pressure; see
+   * StressScalarsPostprocessor) with deal.II's DataOut on curved patches of
+   * the element degree, as DIRECTORY/BASENAME_NNN.pvtu with one .vtu per
+   * rank; returns the .pvtu's name relative to @p directory.
    */
   std::string
   write_deformed_state(const ElasticityOperator                 &op,
