@@ -35,6 +35,9 @@ namespace DiskImpact
   Parameters::parse_parameters(ParameterHandler &prm)
   {
     run.parse_parameters(prm);
+    std::ostringstream json;
+    prm.print_parameters(json, ParameterHandler::ShortJSON);
+    run.parameters_json = json.str();
     geometry.parse_parameters(prm);
     material.parse_parameters(prm);
     finite_element.parse_parameters(prm);

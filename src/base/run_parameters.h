@@ -32,5 +32,8 @@ namespace DiskImpact
 
     Task        task = Task::modal_analysis;
     std::string output_directory;
+    /// Every parameter of the run as JSON (set by parse_parameters()): the
+    /// provenance result files carry.
+    std::string parameters_json;
   };
 } // namespace DiskImpact

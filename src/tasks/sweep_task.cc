@@ -171,11 +171,14 @@ namespace DiskImpact
     class SweepTable
     {
     public:
-      SweepTable(const std::string &directory, std::vector<Point> points)
+      SweepTable(const std::string &directory,
+                 std::vector<Point> points,
+                 const std::string &parameters_json)
           : csv_file(directory + "/restitution.csv")
           , h5_file(directory + "/restitution.h5")
           , lock_file(directory + "/.restitution.lock")
           , points(std::move(points))
+          , parameters_json(parameters_json)
       {
       }
 
@@ -262,6 +265,7 @@ namespace DiskImpact
                          "velocity in c = sqrt(E2/rho), contact_time in R/c, "
                          "delta_max in R, force_max in E2 R, relaxation_time "
                          "in R/c, wall_time in s; the rest dimensionless");
+        h5.set_attribute("/", "parameters", parameters_json);
         h5.finish();
       }
 
@@ -293,6 +297,7 @@ namespace DiskImpact
 
       const std::string  csv_file, h5_file, lock_file;
       std::vector<Point> points;
+      const std::string  parameters_json;
     };
 
     /// The index of the next pending point to run, shared by all ranks: an
@@ -443,7 +448,9 @@ namespace DiskImpact
             MPI_Comm          communicator)
   {
     const unsigned int rank = Utilities::MPI::this_mpi_process(communicator);
-    SweepTable table(parameters.run.output_directory, sweep_points(parameters));
+    SweepTable         table(parameters.run.output_directory,
+                     sweep_points(parameters),
+                     parameters.run.parameters_json);
     // Every rank reads the kept rows: all must agree on the pending points.
     collectively(communicator, [&]() {
       if (resume)
