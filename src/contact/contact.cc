@@ -78,6 +78,13 @@ namespace DiskImpact
   }
 
   double
+  WallLaw::reach() const
+  {
+    return kind == WallLawKind::penalty ? 0. :
+                                          -std::log(exponential_cut) / decay;
+  }
+
+  double
   WallLaw::discrete_gradient_pressure(const double g0, const double g1) const
   {
     const double dg = g1 - g0;

@@ -22,6 +22,14 @@ namespace DiskImpact
     gap(const dealii::Point<2> &x) const;
   };
 
+  /// How the contact force of a time step is formed from the gaps at its
+  /// start (g0) and end (g1).
+  enum class ContactAverage
+  {
+    trapezoidal,      ///< (1 - w) p(g0) + w p(g1): Newmark, generalized-alpha
+    discrete_gradient ///< -(E(g1) - E(g0)) / (g1 - g0): conserves energy
+  };
+
   /// The two wall laws.
   enum class WallLawKind
   {
@@ -59,6 +67,10 @@ namespace DiskImpact
     pressure_derivative(double gap) const;
     double
     energy(double gap) const;
+    /// How far beyond the law's plane the pressure reaches the order of E2
+    /// (the wall plane of the exponential law), 0 for the penalty.
+    double
+    reach() const;
 
     /**
      * The pressure averaged over a time step in which the gap goes from

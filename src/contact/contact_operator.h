@@ -12,30 +12,12 @@ namespace DiskImpact
 {
   class ElasticityOperator;
 
-  /// How the contact force of a time step is formed from the gaps at its
-  /// start (g0) and end (g1).
-  enum class ContactAverage
-  {
-    trapezoidal,      ///< (1 - w) p(g0) + w p(g1): Newmark, generalized-alpha
-    discrete_gradient ///< -(E(g1) - E(g0)) / (g1 - g0): conserves energy
-  };
-
-  /**
-   * A rank-one part w (b . u)(b . v) of the contact tangent, b given by its
-   * entries on unconstrained DoFs (constraints already resolved).
-   */
-  struct RankOneTerm
-  {
-    double                                                          weight = 0.;
-    std::vector<std::pair<dealii::types::global_dof_index, double>> entries;
-  };
-
   /// Integrals of the wall's pressure over the disk's edge.
   struct ContactState
   {
     /// int p ds: the wall's force on the disk along its normal.
     double force = 0.;
-    /// int p_bar ds: the force averaged over a time step (assemble_step).
+    /// int p_bar ds: the force averaged over a time step (ContactZone).
     double force_average = 0.;
     /// int (the law's energy) ds.
     double energy = 0.;
@@ -76,24 +58,6 @@ namespace DiskImpact
              dealii::PETScWrappers::MPI::Vector       *residual,
              dealii::PETScWrappers::MPI::SparseMatrix *tangent) const;
 
-    /**
-     * The contact force of a time step from @p ghosted_u_old to
-     * @p ghosted_u_new, averaged as @p average (with the weight
-     * @p new_weight of the new state if trapezoidal): its residual
-     * contribution is
-     * added to @p residual (the caller compresses), the tangent with respect
-     * to the new state is returned as rank-one terms in @p tangent_terms
-     * (locally owned faces only). The returned state is that of the new
-     * displacement, with force_average the averaged force.
-     */
-    ContactState
-    assemble_step(const dealii::PETScWrappers::MPI::Vector &ghosted_u_old,
-                  const dealii::PETScWrappers::MPI::Vector &ghosted_u_new,
-                  ContactAverage                            average,
-                  double                                    new_weight,
-                  dealii::PETScWrappers::MPI::Vector       &residual,
-                  std::vector<RankOneTerm> *tangent_terms) const;
-
     /// (t, p) at the quadrature points with p > 0, on all ranks, sorted by t.
     std::vector<std::pair<double, double>>
     pressure_profile(const dealii::PETScWrappers::MPI::Vector &ghosted_u) const;
@@ -109,8 +73,5 @@ namespace DiskImpact
     /// Where t = 0: the point of the wall nearest the disk's centre.
     dealii::Point<2>     origin;
     dealii::Tensor<1, 2> tangent_direction;
-    /// The smallest undeformed gap of each locally owned edge face, in the
-    /// order of for_each_curved_edge_face().
-    std::vector<double> face_gap;
   };
 } // namespace DiskImpact

@@ -224,6 +224,7 @@ namespace DiskImpact
         const auto one_dof    = Reference::one_dof_impact(v0, mass, E2, R, C);
         estimate.contact_time = one_dof.contact_time;
         estimate.largest_load = one_dof.max_force / (M_PI * E2 * R);
+        estimate.largest_compression  = one_dof.max_compression;
         estimate.one_dof_contact_time = one_dof.contact_time * c / R;
         estimate.one_dof_delta_max    = one_dof.max_compression / R;
         // With Kelvin-Voigt viscosity: m xi'' + F + tau xi' F' = 0 (seed
@@ -253,7 +254,8 @@ namespace DiskImpact
         const double speed            = impact_velocity;
         const double delta    = speed * R * std::sqrt(std::log(4. / speed));
         estimate.contact_time = M_PI * delta / v0;
-        estimate.largest_load = delta / (R * std::log(4. * R / delta));
+        estimate.largest_compression = delta;
+        estimate.largest_load        = delta / (R * std::log(4. * R / delta));
       }
     return estimate;
   }

@@ -47,6 +47,7 @@ namespace DiskImpact
   {
     double contact_time         = 0.; ///< [time], for the time step
     double largest_load         = 0.; ///< P / (pi E2 R) at the largest force
+    double largest_compression  = 0.; ///< centre-of-mass approach [length]
     double one_dof_contact_time = 0.; ///< [R / c]; NaN beyond the log law
     double one_dof_delta_max    = 0.; ///< [R]; NaN beyond the log law
     double one_dof_epsilon      = 1.; ///< with viscosity; NaN beyond it
@@ -57,7 +58,7 @@ namespace DiskImpact
    * v (subsection Impact), touching it at t = 0. Implicit time integration
    * (TimeIntegrator) with Newton's method for the penalty contact, one
    * factorization of the effective matrix and a low-rank correction for the
-   * contact (LowRankCorrectedSolver); runs until the contact force has
+   * contact (CondensedSolver); runs until the contact force has
    * returned to zero (seed 002) plus a margin. Writes impact.csv,
    * summary.csv and impact.pvd.
    */

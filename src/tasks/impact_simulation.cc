@@ -68,7 +68,8 @@ namespace DiskImpact
                const CsvTable            &series,
                const CsvTable            &modes,
                const std::vector<double> &displacement,
-               const std::vector<double> &velocity)
+               const std::vector<double> &velocity,
+               const std::string         &parameters_json)
     {
       Hdf5Output file(filename);
       file.write_table("summary", Impact::summary_table(summary));
@@ -95,6 +96,7 @@ namespace DiskImpact
                          "units",
                          "lengths R, times R/c, velocities c = sqrt(E2/rho), "
                          "forces E2 R, energies E2 R^2 (per unit thickness)");
+      file.set_attribute("/", "parameters", parameters_json);
       file.finish();
     }
   } // namespace
@@ -191,21 +193,29 @@ namespace DiskImpact
         geometry,
         std::pow(material.transverse_wave_speed() / R, 2),
         impact.projected_modes);
-    contact = std::make_unique<ContactOperator>(
-      op,
-      parameters.contact.wall(),
+    // The candidates for contact: edge points whose undeformed gap is
+    // below the law's reach plus three times the largest approach the
+    // 1-DOF model expects (or the Hertz zone's own gap a^2 / 2R, if
+    // larger).
+    const auto    estimate = impact.estimate_collision(parameters);
+    const WallLaw law =
       parameters.contact.wall_law(E2,
                                   ContactOperator::smallest_edge_face(op),
-                                  R),
-      geometry.center());
+                                  R);
+    const double bound =
+      law.reach() +
+      3. * std::max(estimate.largest_compression,
+                    largest_half_width * largest_half_width / (2. * R));
+    zone = std::make_unique<ContactZone>(
+      op, parameters.contact.wall(), law, geometry.center(), bound);
   }
 
   void
   ImpactSimulation::set_initial_state()
   {
-    for (auto *x :
-         {&u, &v, &a, &u_new, &v_new, &a_new, &along_normal, &b, &r, &du})
+    for (auto *x : {&u, &v, &a, &u_new, &v_new, &a_new, &along_normal, &b, &y})
       *x = op.create_vector();
+    u_D.reinit(zone->candidate_dofs().size());
     work               = op.create_vector();
     product            = op.create_vector();
     const auto &normal = parameters.contact.wall().normal;
@@ -258,18 +268,19 @@ namespace DiskImpact
     A.add(integrator.mass_coefficient(dt), op.mass_matrix());
     if (op.has_damping())
       A.add(integrator.damping_coefficient(dt), op.damping_matrix());
-    solver = std::make_unique<LowRankCorrectedSolver>(A,
-                                                      op.locally_owned_dofs(),
-                                                      communicator);
+    solver = std::make_unique<CondensedSolver>(A,
+                                               op.locally_owned_dofs(),
+                                               communicator);
+    solver->set_observed_dofs(zone->candidate_dofs());
+    solver->add_dofs(zone->active_dofs());
   }
 
   bool
   ImpactSimulation::attempt_step()
   {
-    const auto  &integrator  = parameters.time_integrator;
-    const auto  &constraints = op.get_constraints();
-    const double force_scale = 2. / dt * std::sqrt(2. * energy_initial);
-    // Right-hand side M w - D z - af K u0, predictor u0 + dt v0.
+    const auto &integrator  = parameters.time_integrator;
+    const auto &constraints = op.get_constraints();
+    // Right-hand side M w - D z - af K u0.
     integrator.inertia_vector(u, v, a, dt, work);
     op.mass_matrix().vmult(b, work);
     op.stiffness_matrix().vmult(product, u);
@@ -280,34 +291,62 @@ namespace DiskImpact
         op.damping_matrix().vmult(product, work);
         b.add(-1., product);
       }
-    TimeIntegrator::predictor(u, v, dt, u_new);
-    constraints.distribute(u_new);
-    const auto ghosted_u = op.create_ghosted(u);
-    for (unsigned int it = 0; it <= integrator.max_newton_iterations(); ++it)
+    // The response without contact force: one solve with the factorized
+    // matrix. The end state is y + X P(u1_C): a dense system on C.
+    solver->solve(b, y);
+    constraints.distribute(y);
+    const Vector<double> y_D  = solver->observe(y);
+    Vector<double>       u1_D = y_D;
+    Vector<double>       P;
+    for (;;)
       {
-        op.tangent_matrix().vmult(r, u_new);
-        r -= b;
-        state = contact->assemble_step(ghosted_u,
-                                       op.create_ghosted(u_new),
-                                       integrator.contact_average(),
-                                       integrator.contact_new_weight(),
-                                       r,
-                                       &terms);
-        r.compress(VectorOperation::add);
-        constraints.set_zero(r);
-        if (r.l2_norm() <= integrator.newton_tolerance() * force_scale)
-          {
-            summary.newton_iterations += it;
-            return true;
-          }
-        if (it == integrator.max_newton_iterations())
+        // Points that touch at the start, the contact-free end or the end
+        // found so far take part: their DoFs join C (one solve each).
+        const auto missing = zone->dofs_to_activate({&u_D, &y_D, &u1_D});
+        zone->activate(missing);
+        solver->add_dofs(missing);
+        if (zone->n_active_dofs() == 0)
           break;
-        r *= -1.;
-        solver->solve(terms, r, du);
-        constraints.distribute(du);
-        u_new += du;
+        const Vector<double> u0_C = zone->restrict_to_active(u_D);
+        const Vector<double> y_C  = zone->restrict_to_active(y_D);
+        Vector<double>       u1_C = y_C;
+        unsigned int         iterations;
+        const auto           force = [&](const Vector<double> &u_C) {
+          auto f = zone->step_force(u0_C,
+                                    u_C,
+                                    integrator.contact_average(),
+                                    integrator.contact_new_weight(),
+                                    true);
+          return std::make_pair(f.force, f.jacobian);
+        };
+        if (!solver->solve_condensed(y_C,
+                                     force,
+                                     integrator.newton_tolerance() * R,
+                                     integrator.max_newton_iterations(),
+                                     u1_C,
+                                     iterations))
+          return false;
+        summary.newton_iterations += iterations;
+        P    = force(u1_C).first;
+        u1_D = y_D;
+        u1_D += solver->observed_response(P);
+        if (zone->dofs_to_activate({&u1_D}).empty())
+          break;
       }
-    return false;
+    u_new = y;
+    if (P.size() > 0)
+      solver->add_columns(P, u_new);
+    constraints.distribute(u_new);
+    const Vector<double> u0_C = zone->restrict_to_active(u_D);
+    state                     = zone
+              ->step_force(u0_C,
+                           zone->restrict_to_active(u1_D),
+                           integrator.contact_average(),
+                           integrator.contact_new_weight(),
+                           false)
+              .state;
+    u1_D_new = u1_D;
+    return true;
   }
 
   void
@@ -337,9 +376,10 @@ namespace DiskImpact
         dissipated +=
           2. * dt * factor * quadratic_form(op.damping_matrix(), work);
       }
-    u = u_new;
-    v = v_new;
-    a = a_new;
+    u   = u_new;
+    v   = v_new;
+    a   = a_new;
+    u_D = u1_D_new;
     t += dt;
     ++summary.steps;
   }
@@ -492,8 +532,13 @@ namespace DiskImpact
       });
       if (projection)
         modes.write(directory + "/mode_energies.csv");
-      write_hdf5(
-        directory + "/impact.h5", summary, series, modes, final_u, final_v);
+      write_hdf5(directory + "/impact.h5",
+                 summary,
+                 series,
+                 modes,
+                 final_u,
+                 final_v,
+                 parameters.run.parameters_json);
     });
   }
 } // namespace DiskImpact

@@ -1,7 +1,8 @@
 #pragma once
 
 #include "contact/contact_operator.h"
-#include "dynamics/low_rank_corrected_solver.h"
+#include "contact/contact_zone.h"
+#include "dynamics/condensed_solver.h"
 #include "elasticity/elasticity_operator.h"
 #include "modal/modal_projection.h"
 #include "output/csv_table.h"
@@ -99,12 +100,14 @@ namespace DiskImpact
 
     dealii::parallel::distributed::Triangulation<2> triangulation;
     ElasticityOperator                              op;
-    std::unique_ptr<ContactOperator>                contact;
+    std::unique_ptr<ContactZone>                    zone;
     std::unique_ptr<ModalProjection>                projection;
-    std::unique_ptr<LowRankCorrectedSolver>         solver;
+    std::unique_ptr<CondensedSolver>                solver;
 
     dealii::PETScWrappers::MPI::Vector u, v, a, u_new, v_new, a_new,
-      along_normal, normal_momentum, b, r, du;
+      along_normal, normal_momentum, b, y;
+    /// u on the contact candidates' DoFs, at the step's start and end.
+    dealii::Vector<double>                     u_D, u1_D_new;
     mutable dealii::PETScWrappers::MPI::Vector work, product;
     double                                     normal_mass    = 0.;
     double                                     energy_initial = 0.;
@@ -113,12 +116,11 @@ namespace DiskImpact
     double dt = 0., t = 0.;
     double impulse = 0., energy_error = 0.;
     /// Energy dissipated by the viscosity so far (whole disk).
-    double                   dissipated = 0.;
-    std::vector<RankOneTerm> terms;
-    ContactState             state;
-    unsigned int             cuts                  = 0;
-    unsigned int             factorizations_before = 0, solves_before = 0;
-    double                   solve_time_before = 0.;
+    double       dissipated = 0.;
+    ContactState state;
+    unsigned int cuts                  = 0;
+    unsigned int factorizations_before = 0, solves_before = 0;
+    double       solve_time_before = 0.;
     /// The end of contact (-1: not yet) and the last two positive step-mean
     /// forces with their mid-step times.
     double contact_end    = -1.;

@@ -1,9 +1,9 @@
-// Pieces of the impact solver: the low-rank corrected solver against the
-// residual of the corrected system, and the 1-DOF log-law collision against
+// Pieces of the impact solver: the condensed solver against the residual of
+// the full nonlinear system, and the 1-DOF log-law collision against
 // an independent ODE integration.
 
 #include "body/geometry.h"
-#include "dynamics/low_rank_corrected_solver.h"
+#include "dynamics/condensed_solver.h"
 #include "elasticity/elasticity_operator.h"
 #include "elasticity/material.h"
 #include "reference/log_contact_law.h"
@@ -21,7 +21,7 @@
 
 using namespace DiskImpact;
 
-TEST_CASE("low-rank corrected solver solves (A + sum w b b^T) x = r",
+TEST_CASE("condensed solver solves A u = b + E_C P(u_C), P nonlinear",
           "[impact][fe]")
 {
   dealii::ParameterHandler prm;
@@ -46,49 +46,72 @@ TEST_CASE("low-rank corrected solver solves (A + sum w b b^T) x = r",
   auto &A = op.tangent_reset_to_stiffness();
   A *= 0.5;
   A.add(2. / (0.05 * 0.05), op.mass_matrix());
-  LowRankCorrectedSolver solver(A, op.locally_owned_dofs(), MPI_COMM_WORLD);
+  CondensedSolver solver(A, op.locally_owned_dofs(), MPI_COMM_WORLD);
 
-  // Rank-one terms on a few unconstrained DoFs, stiff as a penalty.
-  std::vector<RankOneTerm> terms;
-  const auto               n = op.get_dof_handler().n_dofs();
-  for (unsigned int t = 0; t < 6; ++t)
-    {
-      RankOneTerm term;
-      term.weight = 1e6 * (t + 1);
-      for (unsigned int k = 0; k < 4; ++k)
-        {
-          const auto dof = (37 * t + 11 * k) % n;
-          if (!op.get_constraints().is_constrained(dof))
-            term.entries.emplace_back(dof, 1. + 0.3 * k - 0.1 * t);
-        }
-      terms.push_back(term);
-    }
-  auto r = op.create_vector(), x = op.create_vector(),
+  // D: eight unconstrained DoFs, C the first six of them.
+  std::vector<dealii::types::global_dof_index> observed;
+  const auto n = op.get_dof_handler().n_dofs();
+  for (unsigned int k = 0; observed.size() < 8; ++k)
+    if (!op.get_constraints().is_constrained((37 * k + 11) % n))
+      observed.push_back((37 * k + 11) % n);
+  solver.set_observed_dofs(observed);
+  solver.add_dofs({0, 1, 2});
+  solver.add_dofs({3, 4, 5}); // C grows in two parts
+
+  auto b = op.create_vector(), u = op.create_vector(),
        check = op.create_vector();
   for (const auto i : op.locally_owned_dofs())
     if (!op.get_constraints().is_constrained(i))
-      r(i) = std::sin(0.37 * i);
-  r.compress(dealii::VectorOperation::insert);
+      b(i) = std::sin(0.37 * i);
+  b.compress(dealii::VectorOperation::insert);
 
-  for (unsigned int round = 0; round < 2; ++round) // the second reuses X
+  // A stiff one-sided force: P_i = -k <u_i - s_i>, s_i below the free
+  // response, so that some but not all of the force is active.
+  solver.solve(b, u);
+  const auto             y_D = solver.observe(u);
+  dealii::Vector<double> y_C(6), s(6);
+  for (unsigned int i = 0; i < 6; ++i)
     {
-      solver.solve(terms, r, x);
-      A.vmult(check, x);
-      for (const auto &term : terms)
-        {
-          double bx = 0.;
-          for (const auto &[i, b] : term.entries)
-            bx += b * x(i);
-          for (const auto &[i, b] : term.entries)
-            check(i) += term.weight * b * bx;
-        }
-      check.compress(dealii::VectorOperation::add);
-      check.add(-1., r);
-      CAPTURE(round);
-      CHECK(check.l2_norm() <= 1e-9 * r.l2_norm());
+      y_C[i] = y_D[i];
+      s[i]   = y_D[i] - (i % 2 == 0 ? 0.1 : -0.1) * std::abs(y_D[i]);
     }
+  const double k     = 1e6;
+  const auto   force = [&](const dealii::Vector<double> &u_C) {
+    dealii::Vector<double>     P(6);
+    dealii::FullMatrix<double> dP(6, 6);
+    for (unsigned int i = 0; i < 6; ++i)
+      if (u_C[i] > s[i])
+        {
+          P[i]     = -k * (u_C[i] - s[i]);
+          dP(i, i) = -k;
+        }
+    return std::make_pair(P, dP);
+  };
+  dealii::Vector<double> u_C = y_C;
+  unsigned int           iterations;
+  INFO("|y_C| = " << y_C.linfty_norm());
+  REQUIRE(solver.solve_condensed(
+    y_C, force, 1e-10 * y_C.linfty_norm(), 30, u_C, iterations));
+  CHECK(iterations <= 10);
+  const auto P = force(u_C).first;
+  solver.add_columns(P, u);
+
+  // The full residual A u - b - E_C P(u_C), and u on D as predicted.
+  A.vmult(check, u);
+  check.add(-1., b);
+  for (unsigned int i = 0; i < 6; ++i)
+    if (op.locally_owned_dofs().is_element(observed[i]))
+      check(observed[i]) -= P[i];
+  check.compress(dealii::VectorOperation::add);
+  CHECK(check.l2_norm() <= 1e-10 * b.l2_norm());
+  auto predicted = y_D;
+  predicted += solver.observed_response(P);
+  const auto u_D = solver.observe(u);
+  for (unsigned int i = 0; i < 8; ++i)
+    CHECK(std::abs(u_D[i] - predicted[i]) <= 1e-12 * u_D.linfty_norm());
+  CHECK(P.l1_norm() > 0.);
   CHECK(solver.n_factorizations() == 1);
-  CHECK(solver.n_contact_dofs() <= 24);
+  CHECK(solver.n_triangular_solves() == 7); // 6 columns and one solve
 }
 
 TEST_CASE("1-DOF log-law collision against an ODE integration", "[impact]")

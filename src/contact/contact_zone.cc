@@ -1,0 +1,256 @@
+#include "contact/contact_zone.h"
+
+#include "base/input_error.h"
+#include "base/run_error.h"
+#include "body/geometry.h"
+#include "elasticity/elasticity_operator.h"
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+
+namespace DiskImpact
+{
+  using namespace dealii;
+
+  ContactZone::ContactZone(const ElasticityOperator &op,
+                           const RigidWall          &wall,
+                           const WallLaw            &law,
+                           const dealii::Point<2>   &disk_center,
+                           const double              gap_bound)
+      : law(law)
+      , bound(gap_bound)
+  {
+    const auto &dof_handler = op.get_dof_handler();
+    const auto &fe          = dof_handler.get_fe();
+    const auto &constraints = op.get_constraints();
+    // More points than the element needs: the pressure has a kink where
+    // contact ends inside a face.
+    const QGauss<1>                      quadrature(fe.degree + 3);
+    FEFaceValues<2>                      face_values(op.get_mapping(),
+                                fe,
+                                quadrature,
+                                update_values | update_quadrature_points |
+                                  update_JxW_values);
+    const FEValuesExtractors::Vector     displacement(0);
+    std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+    const dealii::Point<2>               origin =
+      disk_center - wall.gap(disk_center) * wall.normal;
+    const Tensor<1, 2> along({-wall.normal[1], wall.normal[0]});
+
+    // This rank's candidates, flattened for the exchange: ds, g0, t, the
+    // number of entries, then (DoF, b) pairs.
+    std::vector<double> local;
+    for_each_curved_edge_face(
+      dof_handler, [&](const auto &cell, const unsigned int f) {
+        face_values.reinit(cell, f);
+        const auto &x = face_values.get_quadrature_points();
+        if (std::none_of(x.begin(), x.end(), [&](const auto &point) {
+              return wall.gap(point) < gap_bound;
+            }))
+          return;
+        cell->get_dof_indices(dof_indices);
+        for (const unsigned int q : face_values.quadrature_point_indices())
+          {
+            std::map<types::global_dof_index, double> row;
+            for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+              {
+                const double b =
+                  face_values[displacement].value(i, q) * wall.normal;
+                if (b == 0.)
+                  continue;
+                const auto *entries =
+                  constraints.get_constraint_entries(dof_indices[i]);
+                if (entries == nullptr)
+                  row[dof_indices[i]] += b;
+                else
+                  for (const auto &[j, weight] : *entries)
+                    row[j] += weight * b;
+              }
+            local.insert(local.end(),
+                         {face_values.JxW(q),
+                          wall.gap(x[q]),
+                          (x[q] - origin) * along,
+                          static_cast<double>(row.size())});
+            for (const auto &[dof, b] : row)
+              local.insert(local.end(), {static_cast<double>(dof), b});
+          }
+      });
+
+    // Every rank holds every candidate, in rank order; D sorted.
+    const auto parts =
+      Utilities::MPI::all_gather(dof_handler.get_communicator(), local);
+    std::set<types::global_dof_index> all_dofs;
+    for (const auto &part : parts)
+      for (std::size_t k = 0; k < part.size();)
+        {
+          const auto n_entries = static_cast<std::size_t>(part[k + 3]);
+          for (std::size_t e = 0; e < n_entries; ++e)
+            all_dofs.insert(
+              static_cast<types::global_dof_index>(part[k + 4 + 2 * e]));
+          k += 4 + 2 * n_entries;
+        }
+    dofs.assign(all_dofs.begin(), all_dofs.end());
+    auto position_in_D = [&](const double dof) {
+      return static_cast<unsigned int>(
+        std::lower_bound(dofs.begin(),
+                         dofs.end(),
+                         static_cast<types::global_dof_index>(dof)) -
+        dofs.begin());
+    };
+    for (const auto &part : parts)
+      for (std::size_t k = 0; k < part.size();)
+        {
+          Point      point{part[k], part[k + 1], part[k + 2], {}, {}};
+          const auto n_entries = static_cast<std::size_t>(part[k + 3]);
+          k += 4;
+          for (std::size_t e = 0; e < n_entries; ++e, k += 2)
+            point.row.emplace_back(position_in_D(part[k]), part[k + 1]);
+          points.push_back(std::move(point));
+        }
+    active_position.assign(dofs.size(), -1);
+  }
+
+  const std::vector<types::global_dof_index> &
+  ContactZone::candidate_dofs() const
+  {
+    return dofs;
+  }
+
+  double
+  ContactZone::gap(const Point &point, const Vector<double> &u)
+  {
+    double g = point.gap0;
+    for (const auto &[i, b] : point.row)
+      g += b * u[i];
+    return g;
+  }
+
+  std::vector<unsigned int>
+  ContactZone::dofs_to_activate(
+    const std::vector<const Vector<double> *> &states) const
+  {
+    std::set<unsigned int> missing;
+    for (const Point &point : points)
+      {
+        if (!point.active_row.empty())
+          continue;
+        for (const auto *u : states)
+          if (gap(point, *u) < 0.)
+            {
+              if (point.gap0 > law.reach() + 0.5 * (bound - law.reach()))
+                throw RunError(
+                  "impact: the contact reaches edge points whose undeformed "
+                  "gap is " +
+                  approximately(point.gap0) +
+                  ", farther than the contact zone's bound " +
+                  approximately(bound) +
+                  " foresees (from the 1-DOF model): the collision is far "
+                  "from what the model expects");
+              for (const auto &entry : point.row)
+                if (active_position[entry.first] < 0)
+                  missing.insert(entry.first);
+              break;
+            }
+      }
+    return {missing.begin(), missing.end()};
+  }
+
+  void
+  ContactZone::activate(const std::vector<unsigned int> &positions)
+  {
+    for (const unsigned int i : positions)
+      if (active_position[i] < 0)
+        {
+          active_position[i] = active.size();
+          active.push_back(i);
+        }
+    for (Point &point : points)
+      if (point.active_row.empty() &&
+          std::all_of(point.row.begin(), point.row.end(), [&](const auto &e) {
+            return active_position[e.first] >= 0;
+          }))
+        for (const auto &[i, b] : point.row)
+          point.active_row.emplace_back(active_position[i], b);
+  }
+
+  unsigned int
+  ContactZone::n_active_dofs() const
+  {
+    return active.size();
+  }
+
+  const std::vector<unsigned int> &
+  ContactZone::active_dofs() const
+  {
+    return active;
+  }
+
+  Vector<double>
+  ContactZone::restrict_to_active(const Vector<double> &values_on_D) const
+  {
+    Vector<double> values(active.size());
+    for (unsigned int c = 0; c < active.size(); ++c)
+      values[c] = values_on_D[active[c]];
+    return values;
+  }
+
+  ContactZone::StepForce
+  ContactZone::step_force(const Vector<double> &u0,
+                          const Vector<double> &u1,
+                          const ContactAverage  average,
+                          const double          new_weight,
+                          const bool            with_jacobian) const
+  {
+    const unsigned int n = active.size();
+    StepForce          result;
+    result.force.reinit(n);
+    if (with_jacobian)
+      result.jacobian.reinit(n, n);
+    ContactState &state = result.state;
+    for (const Point &point : points)
+      {
+        if (point.active_row.empty())
+          continue;
+        double g0 = point.gap0, g1 = point.gap0;
+        for (const auto &[i, b] : point.active_row)
+          {
+            g0 += b * u0[i];
+            g1 += b * u1[i];
+          }
+        if (g0 >= 0. && g1 >= 0.)
+          continue;
+        double p_bar, dp_bar;
+        if (average == ContactAverage::discrete_gradient)
+          {
+            p_bar  = law.discrete_gradient_pressure(g0, g1);
+            dp_bar = law.discrete_gradient_derivative(g0, g1);
+          }
+        else
+          {
+            p_bar = (1. - new_weight) * law.pressure(g0) +
+                    new_weight * law.pressure(g1);
+            dp_bar = new_weight * law.pressure_derivative(g1);
+          }
+        const double p1 = law.pressure(g1);
+        state.force += p1 * point.ds;
+        state.force_average += p_bar * point.ds;
+        state.energy += law.energy(g1) * point.ds;
+        state.second_moment += p1 * point.t * point.t * point.ds;
+        state.max_penetration = std::max(state.max_penetration, -g1);
+        for (const auto &[i, b] : point.active_row)
+          result.force[i] += point.ds * p_bar * b;
+        if (with_jacobian && dp_bar != 0.)
+          for (const auto &[i, bi] : point.active_row)
+            for (const auto &[j, bj] : point.active_row)
+              result.jacobian(i, j) += point.ds * dp_bar * bi * bj;
+      }
+    return result;
+  }
+} // namespace DiskImpact

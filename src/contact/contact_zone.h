@@ -1,0 +1,121 @@
+#pragma once
+
+#include "contact/contact.h"
+#include "contact/contact_operator.h"
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/types.h>
+
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <utility>
+#include <vector>
+
+namespace DiskImpact
+{
+  class ElasticityOperator;
+
+  /**
+   * The wall contact reduced to the few degrees of freedom it can act on.
+   *
+   * The candidates are the quadrature points of the edge faces whose
+   * undeformed gap is below a bound (the largest approach expected, with a
+   * margin), each with its weight ds, its undeformed gap g_0 and its row b:
+   * the normal displacement n . u(x_q) = b . u_D in terms of the
+   * candidates' DoFs D (hanging-node constraints resolved), replicated on
+   * every rank. The gap is g = g_0 + b . u_D.
+   *
+   * The active DoFs C, a subset of D, are those of the points that have
+   * touched the wall: only points with all their DoFs in C carry a force.
+   * The step's contact force on C,
+   *
+   *   P = sum_q ds_q p_bar(g_q(u0_C), g_q(u1_C)) b_q,
+   *
+   * and its Jacobian dP/du1_C are evaluated without communication.
+   */
+  class ContactZone
+  {
+  public:
+    /// The candidates: points of edge faces with undeformed gap below
+    /// @p gap_bound. Collective.
+    ContactZone(const ElasticityOperator &op,
+                const RigidWall          &wall,
+                const WallLaw            &law,
+                const dealii::Point<2>   &disk_center,
+                double                    gap_bound);
+
+    /// D, the candidates' DoFs.
+    const std::vector<dealii::types::global_dof_index> &
+    candidate_dofs() const;
+
+    /**
+     * The DoFs (positions in D) of the points that touch the wall (g < 0)
+     * in one of the states @p states (values on D) but are not active yet.
+     * Throws a RunError if a point in the outer half of the candidates
+     * (beyond the law's reach) touches: they might not cover the contact.
+     */
+    std::vector<unsigned int>
+    dofs_to_activate(
+      const std::vector<const dealii::Vector<double> *> &states) const;
+
+    /// Append the DoFs @p positions (in D) to C, in this order.
+    void
+    activate(const std::vector<unsigned int> &positions);
+
+    /// |C|.
+    unsigned int
+    n_active_dofs() const;
+    /// C, as positions in D in the order of activation.
+    const std::vector<unsigned int> &
+    active_dofs() const;
+
+    /// The values on C of @p values_on_D.
+    dealii::Vector<double>
+    restrict_to_active(const dealii::Vector<double> &values_on_D) const;
+
+    /// The step's force on C and what it says of the contact.
+    struct StepForce
+    {
+      dealii::Vector<double>     force;    ///< P
+      dealii::FullMatrix<double> jacobian; ///< dP / du1_C (if asked for)
+      ContactState               state;    ///< at u1; force_average of P
+    };
+
+    /**
+     * P for a step from @p u0 to @p u1 (values on C), the pressure averaged
+     * as @p average (with the weight @p new_weight of the end state if
+     * trapezoidal); with @p with_jacobian also dP/du1.
+     */
+    StepForce
+    step_force(const dealii::Vector<double> &u0,
+               const dealii::Vector<double> &u1,
+               ContactAverage                average,
+               double                        new_weight,
+               bool                          with_jacobian) const;
+
+  private:
+    /// One candidate quadrature point.
+    struct Point
+    {
+      double ds;   ///< JxW
+      double gap0; ///< undeformed gap
+      double t;    ///< coordinate along the wall from the contact point
+      std::vector<std::pair<unsigned int, double>> row; ///< (position in D, b)
+      /// (position in C, b) once all its DoFs are active, else empty.
+      std::vector<std::pair<unsigned int, double>> active_row;
+    };
+
+    /// g of @p point for the values @p u on D.
+    static double
+    gap(const Point &point, const dealii::Vector<double> &u);
+
+    WallLaw                                      law;
+    double                                       bound;
+    std::vector<dealii::types::global_dof_index> dofs;
+    std::vector<Point>                           points;
+    /// Position in C of each DoF of D (-1: not active), and C in D.
+    std::vector<int>          active_position;
+    std::vector<unsigned int> active;
+  };
+} // namespace DiskImpact

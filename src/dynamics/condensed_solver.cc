@@ -1,0 +1,202 @@
+#include "dynamics/condensed_solver.h"
+
+#include "base/petsc_check.h"
+
+#include <deal.II/base/mpi.h>
+
+#include <deal.II/lac/lapack_full_matrix.h>
+
+#include <chrono>
+
+namespace DiskImpact
+{
+  using namespace dealii;
+
+  CondensedSolver::CondensedSolver(const PETScWrappers::MPI::SparseMatrix &A,
+                                   const IndexSet &locally_owned,
+                                   MPI_Comm        communicator)
+      : owned(locally_owned)
+      , communicator(communicator)
+  {
+    PC pc;
+    check_petsc(KSPCreate(communicator, &ksp), "KSPCreate");
+    check_petsc(KSPSetOperators(ksp, A, A), "KSPSetOperators");
+    check_petsc(KSPSetType(ksp, KSPPREONLY), "KSPSetType");
+    check_petsc(KSPGetPC(ksp, &pc), "KSPGetPC");
+    check_petsc(PCSetType(pc, PCCHOLESKY), "PCSetType");
+    check_petsc(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS),
+                "PCFactorSetMatSolverType");
+    // PETSc's options (e.g. -mat_mumps_icntl_7 for the ordering) apply.
+    check_petsc(KSPSetFromOptions(ksp), "KSPSetFromOptions");
+    check_petsc(KSPSetUp(ksp), "KSPSetUp");
+    ++factorizations;
+  }
+
+  CondensedSolver::~CondensedSolver()
+  {
+    if (ksp != nullptr)
+      KSPDestroy(&ksp);
+  }
+
+  unsigned int
+  CondensedSolver::n_factorizations() const
+  {
+    return factorizations;
+  }
+
+  unsigned int
+  CondensedSolver::n_triangular_solves() const
+  {
+    return triangular_solves;
+  }
+
+  double
+  CondensedSolver::triangular_solve_time() const
+  {
+    return solve_seconds;
+  }
+
+  unsigned int
+  CondensedSolver::n_contact_dofs() const
+  {
+    return contact_positions.size();
+  }
+
+  void
+  CondensedSolver::apply_inverse(const PETScWrappers::MPI::Vector &r,
+                                 PETScWrappers::MPI::Vector       &y)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    check_petsc(KSPSolve(ksp, r, y), "KSPSolve");
+    solve_seconds +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+        .count();
+    ++triangular_solves;
+  }
+
+  void
+  CondensedSolver::solve(const PETScWrappers::MPI::Vector &b,
+                         PETScWrappers::MPI::Vector       &y)
+  {
+    apply_inverse(b, y);
+  }
+
+  void
+  CondensedSolver::set_observed_dofs(
+    const std::vector<types::global_dof_index> &observed)
+  {
+    observed_dofs = observed;
+  }
+
+  Vector<double>
+  CondensedSolver::observe(const PETScWrappers::MPI::Vector &v) const
+  {
+    std::vector<double> values(observed_dofs.size(), 0.);
+    for (unsigned int i = 0; i < observed_dofs.size(); ++i)
+      if (owned.is_element(observed_dofs[i]))
+        values[i] = v(observed_dofs[i]);
+    Utilities::MPI::sum(values, communicator, values);
+    return Vector<double>(values.begin(), values.end());
+  }
+
+  void
+  CondensedSolver::add_dofs(const std::vector<unsigned int> &positions)
+  {
+    for (const unsigned int position : positions)
+      {
+        const auto dof = observed_dofs[position];
+        contact_positions.push_back(position);
+        PETScWrappers::MPI::Vector unit(owned, communicator);
+        if (owned.is_element(dof))
+          unit(dof) = 1.;
+        unit.compress(VectorOperation::insert);
+        columns.emplace_back(owned, communicator);
+        apply_inverse(unit, columns.back());
+        observed_columns.push_back(observe(columns.back()));
+      }
+    // S = E_C^T X from the columns' values on D.
+    const unsigned int n = contact_positions.size();
+    s_matrix.reinit(n, n);
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = 0; j < n; ++j)
+        s_matrix(i, j) = 0.5 * (observed_columns[j][contact_positions[i]] +
+                                observed_columns[i][contact_positions[j]]);
+  }
+
+  Vector<double>
+  CondensedSolver::observed_response(const Vector<double> &P) const
+  {
+    Vector<double> response(observed_dofs.size());
+    for (unsigned int j = 0; j < P.size(); ++j)
+      response.add(P[j], observed_columns[j]);
+    return response;
+  }
+
+  void
+  CondensedSolver::add_columns(const Vector<double>       &P,
+                               PETScWrappers::MPI::Vector &x) const
+  {
+    for (unsigned int j = 0; j < P.size(); ++j)
+      if (P[j] != 0.)
+        x.add(P[j], columns[j]);
+  }
+
+  bool
+  CondensedSolver::solve_condensed(const Vector<double> &y_C,
+                                   const Force          &force,
+                                   const double          tolerance,
+                                   const unsigned int    max_iterations,
+                                   Vector<double>       &u_C,
+                                   unsigned int         &iterations) const
+  {
+    const unsigned int n = y_C.size();
+    // h(u) = u - y_C - S P(u) and |h|, with the Jacobian I - S dP/du.
+    Vector<double>     h(n), sp(n);
+    FullMatrix<double> jacobian;
+    auto               residual = [&](const Vector<double> &u, bool with_jac) {
+      auto [P, dP] = force(u);
+      s_matrix.vmult(sp, P);
+      h = u;
+      h -= y_C;
+      h -= sp;
+      if (with_jac)
+        {
+          jacobian.reinit(n, n);
+          s_matrix.mmult(jacobian, dP);
+          jacobian *= -1.;
+          for (unsigned int i = 0; i < n; ++i)
+            jacobian(i, i) += 1.;
+        }
+      return h.linfty_norm();
+    };
+    double norm = residual(u_C, true);
+    for (iterations = 0; iterations < max_iterations; ++iterations)
+      {
+        if (norm <= tolerance)
+          return true;
+        LAPACKFullMatrix<double> system(n, n);
+        system = jacobian;
+        system.compute_lu_factorization();
+        Vector<double> step(h);
+        system.solve(step);
+        // Backtracking: the penalty's kinks can make a full step overshoot.
+        double         length = 1.;
+        Vector<double> trial(n);
+        bool           decreased = false;
+        for (unsigned int cut = 0; cut < 20 && !decreased;
+             ++cut, length *= 0.5)
+          {
+            trial = u_C;
+            trial.add(-length, step);
+            decreased = residual(trial, false) < norm;
+          }
+        // No decrease along the Newton direction: rounding has the last
+        // word.
+        if (!decreased)
+          return false;
+        u_C  = trial;
+        norm = residual(u_C, true);
+      }
+    return norm <= tolerance;
+  }
+} // namespace DiskImpact
