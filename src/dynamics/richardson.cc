@@ -11,6 +11,41 @@
 
 namespace DiskImpact
 {
+  namespace
+  {
+    /// The observed order of the triple ending at values[end], NaN unless
+    /// it converges monotonically (q = d1 / d2 > 1).
+    double
+    triple_order(const std::vector<double> &values,
+                 const std::size_t          end,
+                 const double               ratio)
+    {
+      const double d1 = values[end - 1] - values[end - 2];
+      const double d2 = values[end] - values[end - 1];
+      const double q  = d1 / d2;
+      return d2 != 0. && q > 1. ? std::log(q) / std::log(ratio) :
+                                  std::numeric_limits<double>::quiet_NaN();
+    }
+
+    /// Largest distance of the last three triples' orders from their mean
+    /// (NaN unless there are three monotone triples).
+    double
+    order_scatter(const std::vector<double> &values, const double ratio)
+    {
+      const std::size_t n = values.size();
+      if (n < 5)
+        return std::numeric_limits<double>::quiet_NaN();
+      std::vector<double> orders;
+      for (std::size_t end = n - 3; end < n; ++end)
+        orders.push_back(triple_order(values, end, ratio));
+      const double mean = (orders[0] + orders[1] + orders[2]) / 3.;
+      double       scatter = 0.;
+      for (const double p : orders)
+        scatter = std::max(scatter, std::abs(p - mean));
+      return std::isnan(mean) ? mean : scatter;
+    }
+  } // namespace
+
   RichardsonEstimate
   richardson_estimate(const std::vector<double> &values,
                       const double               ratio,
@@ -22,10 +57,11 @@ namespace DiskImpact
     const std::size_t  n  = values.size();
     const double       d2 = values[n - 1] - values[n - 2];
     RichardsonEstimate estimate;
-    estimate.extrapolated = values[n - 1];
-    estimate.order        = std::numeric_limits<double>::quiet_NaN();
-    const double d1       = n < 3 ? 0. : values[n - 2] - values[n - 3];
-    estimate.error        = 3. * std::max(std::abs(d1), std::abs(d2)) /
+    estimate.extrapolated  = values[n - 1];
+    estimate.order         = std::numeric_limits<double>::quiet_NaN();
+    estimate.order_scatter = order_scatter(values, ratio);
+    const double d1        = n < 3 ? 0. : values[n - 2] - values[n - 3];
+    estimate.error         = 3. * std::max(std::abs(d1), std::abs(d2)) /
                      (std::pow(ratio, expected_order) - 1.);
     if (n < 3 || d2 == 0.)
       return estimate;
@@ -41,11 +77,10 @@ namespace DiskImpact
           3. * std::abs(d2) / (std::pow(ratio, expected_order) - 1.);
         return estimate;
       }
-    if (order < 0.5 * expected_order)
-      {
-        estimate.error = 3. * std::abs(d2) / (q - 1.);
-        return estimate;
-      }
+    estimate.error = 3. * std::abs(d2) / (q - 1.);
+    if (order < 0.5 * expected_order ||
+        !(estimate.order_scatter <= clean_order_scatter))
+      return estimate;
     estimate.clean        = true;
     estimate.order        = order;
     estimate.extrapolated = values[n - 1] + d2 / (q - 1.);

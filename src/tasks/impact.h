@@ -33,7 +33,7 @@ namespace DiskImpact
     double       time_step         = 0.;     ///< [R / c]
     double       wall_time_loop    = 0.;     ///< time stepping only [s]
     double       triangular_solve_time = 0.; ///< mean time of one solve [s]
-    unsigned int contact_dofs          = 0;  ///< DoFs of the low-rank part
+    unsigned int contact_dofs          = 0;  ///< DoFs the contact was condensed on
     unsigned int massless_dofs         = 0;  ///< DoFs without inertia
     double       schwager_alpha        = 0.; ///< tau sqrt(pi E2 / m)
     double       one_dof_contact_time  = 0.; ///< 1-DOF log law [R / c]
@@ -56,9 +56,9 @@ namespace DiskImpact
   /**
    * Task 'impact': the disk, undeformed, moving toward the wall with speed
    * v (subsection Impact), touching it at t = 0. Implicit time integration
-   * (TimeIntegrator) with Newton's method for the penalty contact, one
-   * factorization of the effective matrix and a low-rank correction for the
-   * contact (CondensedSolver); runs until the contact force has
+   * (TimeIntegrator), one factorization of the effective matrix and the
+   * contact condensed on its DoFs, solved by Newton's method
+   * (CondensedSolver); runs until the contact force has
    * returned to zero (seed 002) plus a margin. Writes impact.csv,
    * summary.csv and impact.pvd.
    */

@@ -297,13 +297,15 @@ namespace DiskImpact
   ImpactConvergenceStudy::estimates_table(const ConvergedEpsilon &result)
   {
     CsvTable table(
-      {"factor", "observed_order", "clean", "limit", "correction", "error"});
+      {"factor", "observed_order", "order_scatter", "clean", "limit",
+       "correction", "error"});
     for (unsigned int i = 0; i < result.factors.size(); ++i)
       {
         const auto &e = result.estimates[i];
         table.start_row();
         table.add(result.factors[i]);
         table.add(e.order);
+        table.add(e.order_scatter);
         table.add(e.clean ? 1 : 0);
         table.add(e.extrapolated);
         table.add(e.extrapolated - result.base.epsilon);
@@ -313,11 +315,32 @@ namespace DiskImpact
     table.add(std::string("total"));
     table.add_empty();
     table.add_empty();
+    table.add_empty();
     table.add(result.epsilon);
     table.add(result.epsilon - result.base.epsilon);
     table.add(result.error);
     return table;
   }
+
+  namespace
+  {
+    /// Why @p e was not extrapolated (empty if it was).
+    std::string
+    why_not_clean(const RichardsonEstimate &e)
+    {
+      if (e.clean)
+        return "";
+      std::ostringstream why;
+      if (std::isnan(e.order_scatter))
+        why << "  (not extrapolated: no three monotone level triples)";
+      else
+        why << "  (not extrapolated: the orders of the last three triples "
+               "scatter by "
+            << std::fixed << std::setprecision(2) << e.order_scatter
+            << " > " << clean_order_scatter << ")";
+      return why.str();
+    }
+  } // namespace
 
   void
   run_impact_convergence(const Parameters &parameters, MPI_Comm communicator)
@@ -350,7 +373,7 @@ namespace DiskImpact
             << std::setprecision(2) << std::setw(7) << e.order
             << std::setprecision(8) << std::setw(13) << e.extrapolated
             << std::scientific << std::setprecision(2) << std::setw(10)
-            << e.error << (e.clean ? "" : "  (order not clean)") << '\n';
+            << e.error << why_not_clean(e) << '\n';
       }
     out << std::fixed << std::setprecision(8)
         << "  epsilon = " << result.epsilon << " +- " << std::scientific

@@ -24,7 +24,7 @@ namespace DiskImpact
   /**
    * One impact (task 'impact', docs/impact.md): the 1-DOF estimate of the
    * collision, the mesh graded toward the contact, the operators, time
-   * stepping with Newton's method and the low-rank corrected solver, the
+   * stepping with the contact condensed on its DoFs (CondensedSolver), the
    * end of the collision (the step-mean contact force back at zero, seed
    * 002) plus a margin, and the outputs. Built and run once.
    */

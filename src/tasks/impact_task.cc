@@ -48,7 +48,7 @@ namespace DiskImpact
         << s.wall_time_loop / s.steps / s.triangular_solve_time
         << " solves with the factorized matrix (one: "
         << s.triangular_solve_time * 1e3 << " ms); " << s.contact_dofs
-        << " contact DoFs in the low-rank part\n";
+        << " contact DoFs condensed\n";
     pcout << out.str();
   }
 } // namespace DiskImpact

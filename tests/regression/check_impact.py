@@ -3,6 +3,7 @@
 
 usage: check_impact.py summary.csv [--epsilon E TOL] [--energy TOL]
        [--impulse TOL] [--one-dof TOL] [--factorizations N]
+       [--solves-per-step MAX]
 """
 import argparse
 import csv
@@ -16,6 +17,9 @@ p.add_argument("--impulse", type=float, help="bound on impulse_error")
 p.add_argument("--one-dof", type=float,
                help="relative bound on contact time and delta_max vs the 1-DOF model")
 p.add_argument("--factorizations", type=int)
+p.add_argument("--solves-per-step", type=float,
+               help="bound on triangular_solves / steps (solves with the "
+                    "factorized matrix per time step)")
 a = p.parse_args()
 s = next(csv.DictReader(open(a.summary, newline="")))
 checks = []
@@ -36,6 +40,10 @@ if a.one_dof is not None:
 if a.factorizations is not None:
     checks.append(("factorizations", int(s["factorizations"]),
                    int(s["factorizations"]) == a.factorizations))
+if a.solves_per_step is not None:
+    ratio = int(s["triangular_solves"]) / int(s["steps"])
+    checks.append(("triangular_solves / steps", ratio,
+                   ratio <= a.solves_per_step))
 failures = 0
 for name, value, ok in checks:
     failures += not ok

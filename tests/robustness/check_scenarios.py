@@ -48,7 +48,9 @@ subsection Impact
   set Error estimate = false
 end
 subsection Time stepping
-  set Time step fraction = 0.02
+  # Points of about a second: mpirun takes up to a second to end its
+  # ranks after SIGINT, and the sweep must still be running then.
+  set Time step fraction = 0.005
 end
 """
 
@@ -75,13 +77,20 @@ def done_rows(work):
     return {r["velocity"]: r for r in table(work) if r["status"] == "done"}
 
 
+def default_signals():
+    """SIGINT as at a terminal, even where CI starts us with it ignored."""
+    signal.signal(signal.SIGINT, signal.SIG_DFL)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+
+
 def start(args, work, ranks=2):
     # mpirun -q: without mpirun's own notice of a non-zero exit code.
     command = ([args.mpirun, "-q", "-np", str(ranks)] if ranks > 1 else []) \
         + [args.diskimpact, "run.prm"]
     return subprocess.Popen(command, cwd=work, stdout=subprocess.PIPE,
                             stderr=subprocess.PIPE, text=True,
-                            start_new_session=True)
+                            start_new_session=True,
+                            preexec_fn=default_signals)
 
 
 def descendants(pid):
@@ -142,10 +151,16 @@ def scenario_resume(args, root):
     with open(os.path.join(work, "run.prm"), "w") as f:
         f.write(SWEEP_PRM)
 
-    # SIGINT (Ctrl-C) to mpirun after two rows.
+    # SIGINT (Ctrl-C) after two rows, to mpirun and its ranks (mpirun puts
+    # each rank in a process group of its own; a batch system's signal
+    # reaches them all).
     process = start(args, work)
     wait_for_rows(process, work, 2)
-    os.killpg(process.pid, signal.SIGINT)
+    for pid in [process.pid] + descendants(process.pid):
+        try:
+            os.kill(pid, signal.SIGINT)
+        except ProcessLookupError:
+            pass
     process.communicate(timeout=60)
     first = done_rows(work)
     print(f"after SIGINT: {len(first)} of 8 rows done, "
