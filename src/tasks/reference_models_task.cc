@@ -176,23 +176,58 @@ namespace DiskImpact
     on_root(communicator, [&]() { tabulate(parameters); });
   }
 
+  namespace
+  {
+    /// The table of @p model in its output directory.
+    std::string
+    table_name(const ReferenceModel model)
+    {
+      switch (model)
+        {
+          case ReferenceModel::disk:
+            return "reference_disk.csv";
+          case ReferenceModel::dashpot:
+            return "reference_dashpot.csv";
+          case ReferenceModel::spheres:
+            return "reference_spheres.csv";
+          case ReferenceModel::rayleigh:
+            return "reference_rayleigh.csv";
+        }
+      return "";
+    }
+  } // namespace
+
+  std::vector<std::string>
+  ReferenceModels::other_models_files() const
+  {
+    std::vector<std::string> others;
+    for (const auto other : {ReferenceModel::disk,
+                             ReferenceModel::dashpot,
+                             ReferenceModel::spheres,
+                             ReferenceModel::rayleigh})
+      if (other != model)
+        others.push_back(table_name(other));
+    return others;
+  }
+
   void
   ReferenceModels::tabulate(const Parameters &parameters) const
   {
-    const std::string directory = parameters.run.output_directory + "/";
+    const std::string file =
+      parameters.run.output_directory + "/" + table_name(model);
     switch (model)
       {
         case ReferenceModel::disk:
-          tabulate_disk(parameters, directory + "reference_disk.csv");
+          tabulate_disk(parameters, file);
           break;
         case ReferenceModel::dashpot:
-          tabulate_dashpot(directory + "reference_dashpot.csv");
+          tabulate_dashpot(file);
           break;
         case ReferenceModel::spheres:
-          tabulate_spheres(directory + "reference_spheres.csv");
+          tabulate_spheres(file);
           break;
         case ReferenceModel::rayleigh:
-          tabulate_rayleigh(parameters, directory + "reference_rayleigh.csv");
+          tabulate_rayleigh(parameters, file);
           break;
       }
   }

@@ -54,6 +54,11 @@ namespace DiskImpact
     void
     run(const Parameters &parameters, MPI_Comm communicator) const;
 
+    /// The tables of the models other than the chosen one: a run leaves
+    /// them in its output directory (each model writes its own file).
+    std::vector<std::string>
+    other_models_files() const;
+
   private:
     /// Compute the chosen model and write its table (on this rank).
     void

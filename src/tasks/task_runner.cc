@@ -107,9 +107,14 @@ namespace DiskImpact
                                     communicator);
     const bool            resume = parameters.run.task == Task::sweep &&
                         sweep_resumes(parameters, prm, communicator);
-    directory.remove_results(result_patterns,
-                             resume ? sweep_result_files() :
-                                      std::vector<std::string>());
+    // Kept: a resumed sweep's table; the reference models' other tables
+    // (the models share one output directory, one file each).
+    directory.remove_results(
+      result_patterns,
+      resume ? sweep_result_files() :
+      parameters.run.task == Task::reference_models ?
+               parameters.reference_models.other_models_files() :
+               std::vector<std::string>());
     directory.write_parameters(prm);
 
     pcout << "diskimpact: " << Utilities::MPI::n_mpi_processes(communicator)
