@@ -58,5 +58,17 @@ namespace DiskImpact
     {
       return 2. * std::sqrt(load);
     }
+
+    double
+    centre_of_mass_constant(const double nu2)
+    {
+      return -2. * std::log(2.) - (1. + nu2) / 4.;
+    }
+
+    double
+    diameter_constant()
+    {
+      return -1.;
+    }
   } // namespace Reference
 } // namespace DiskImpact

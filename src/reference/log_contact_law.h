@@ -51,5 +51,25 @@ namespace DiskImpact
     /// eq. 48: a^2 = 4 P R / (pi E2)).
     double
     hertz_half_width(double load);
+
+    /**
+     * The constant C of the law for the approach of the centre of mass
+     * (the area mean of the displacement) of a disk pressed on the rigid
+     * wall by a uniform body force, derived from Michell's stress field
+     * (seed 001, eqs. 50-53) with Hertz's contact (eq. 46):
+     *
+     *   C_com = -2 ln 2 - (1 + nu2) / 4,
+     *
+     * i.e. delta_com = P/(pi E2) [ln(pi R E2 / P) - (1 + nu2)/4]
+     * (docs/contact-law.md). @p nu2 is the in-plane Poisson ratio.
+     */
+    double
+    centre_of_mass_constant(double nu2);
+
+    /// The constant C of the shortening of the diameter on the impact axis,
+    /// -1 for every Poisson ratio (docs/contact-law.md; seed 001, eq. 57
+    /// prints -1 - nu2).
+    double
+    diameter_constant();
   } // namespace Reference
 } // namespace DiskImpact

@@ -22,11 +22,15 @@ namespace DiskImpact
 
   namespace
   {
-    /// The contact-law constant of the 1-DOF model: "fit" is the measured
-    /// C_com = -1 - 2/pi - nu2/4 (docs/contact-law.md), else a number.
+    /// The contact-law constant of the 1-DOF model: "exact" is the
+    /// centre-of-mass constant C_com = -2 ln 2 - (1 + nu2)/4, "fit" the
+    /// earlier fit -1 - 2/pi - nu2/4 to the FE (docs/contact-law.md), else a
+    /// number.
     double
     parse_contact_law_constant(const std::string &text, const double nu2)
     {
+      if (text == "exact")
+        return Reference::centre_of_mass_constant(nu2);
       if (text == "fit")
         return -1. - 2. / M_PI - nu2 / 4.;
       // The whole text must be one finite number ("1x" is not).
@@ -35,8 +39,8 @@ namespace DiskImpact
       stream >> value;
       require(!stream.fail() && (stream >> std::ws).eof() &&
                 std::isfinite(value),
-              "Impact: 'Contact law constant' must be 'fit' or a finite "
-              "number, got '" +
+              "Impact: 'Contact law constant' must be 'exact', 'fit' or a "
+              "finite number, got '" +
                 text + "'");
       return value;
     }
@@ -65,12 +69,13 @@ namespace DiskImpact
                       "Growth of the element size with distance from the "
                       "contact zone [-].");
     prm.declare_entry("Contact law constant",
-                      "fit",
+                      "exact",
                       Patterns::Anything(),
                       "Constant C of the log law in the 1-DOF reference model "
-                      "(time-step estimate, comparison): 'fit' for the "
-                      "measured centre-of-mass law C = -1 - 2/pi - nu2/4, or "
-                      "a number.");
+                      "(time-step estimate, comparison): 'exact' for the "
+                      "centre-of-mass law C = -2 ln 2 - (1 + nu2)/4, 'fit' "
+                      "for the earlier fit C = -1 - 2/pi - nu2/4, or a "
+                      "number.");
     prm.declare_entry("Output interval",
                       "20",
                       Patterns::Integer(0),
@@ -146,8 +151,7 @@ namespace DiskImpact
     require(impact_velocity > 0. && impact_velocity <= 0.5,
             "Impact: 'Velocity' must satisfy 0 < v/c <= 0.5, got " +
               Utilities::to_string(impact_velocity));
-    if (contact_law_constant != "fit")
-      parse_contact_law_constant(contact_law_constant, 0.);
+    parse_contact_law_constant(contact_law_constant, 0.);
   }
 
   double
