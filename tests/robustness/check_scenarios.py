@@ -112,6 +112,15 @@ def descendants(pid):
     return found
 
 
+def signal_all(process, number):
+    """Send signal @p number to @p process and all its descendants."""
+    for pid in [process.pid] + descendants(process.pid):
+        try:
+            os.kill(pid, number)
+        except ProcessLookupError:
+            pass
+
+
 def wait_for_rows(process, work, count, timeout=120):
     """Wait until the table has @p count finished rows."""
     end = time.time() + timeout
@@ -156,11 +165,7 @@ def scenario_resume(args, root):
     # reaches them all).
     process = start(args, work)
     wait_for_rows(process, work, 2)
-    for pid in [process.pid] + descendants(process.pid):
-        try:
-            os.kill(pid, signal.SIGINT)
-        except ProcessLookupError:
-            pass
+    signal_all(process, signal.SIGINT)
     process.communicate(timeout=60)
     first = done_rows(work)
     print(f"after SIGINT: {len(first)} of 8 rows done, "
@@ -169,11 +174,7 @@ def scenario_resume(args, root):
     # SIGKILL of everything after one more row.
     process = start(args, work)
     wait_for_rows(process, work, len(first) + 1)
-    for pid in descendants(process.pid) + [process.pid]:
-        try:
-            os.kill(pid, signal.SIGKILL)
-        except ProcessLookupError:
-            pass
+    signal_all(process, signal.SIGKILL)
     process.communicate(timeout=60)
     second = done_rows(work)
     check_kept(first, second, "after SIGKILL")
