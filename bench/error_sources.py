@@ -8,6 +8,8 @@ time step fraction 0.01):
 
   time step        Delta t halved, everything else fixed (penalty law)
   time step, exp.  the same with the smooth exponential wall law, alpha = 100
+  time step, red.  the same with the penalty law and mass redistribution
+                   (the contact edge without inertia)
   penalty          kappa doubled at a time step fine enough for it
   far field        one more global refinement (the contact zone's mesh fixed)
   contact mesh     the elements across the contact doubled (k = kappa E2/h
@@ -21,6 +23,7 @@ sequence). Writes the table as CSV and, with --plot, the figure of
 docs/impact-convergence.md.
 
 usage: bench/error_sources.py [-o error_sources.csv] [--plot PNG]
+                              [--only NAME ...]
        (build first; about 2 minutes on one core)
 """
 import argparse
@@ -52,6 +55,9 @@ SEQUENCES = {
     "time step, exponential law": (
         "Time stepping/Time step fraction", FRACTIONS,
         {"Contact/Law": "exponential", "Contact/Potential stiffness": 100}),
+    "time step, redistributed mass": (
+        "Time stepping/Time step fraction", FRACTIONS,
+        {"Time stepping/Contact mass": "redistributed"}),
     "penalty": ("Contact/Penalty factor", [50, 100, 200, 400, 800],
                 {"Time stepping/Time step fraction": 0.00125}),
     "far field": ("Geometry/Global refinements", [0, 1, 2, 3, 4],
@@ -94,9 +100,13 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("-o", "--output", default="error_sources.csv")
     parser.add_argument("--plot", help="PNG of the differences and orders")
+    parser.add_argument("--only", nargs="+", choices=list(SEQUENCES),
+                        metavar="NAME", help="run only these sequences")
     args = parser.parse_args()
     rows = []
     for name, (entry, parameters, fixed) in SEQUENCES.items():
+        if args.only and name not in args.only:
+            continue
         values = []
         for level, parameter in enumerate(parameters):
             epsilon, dofs, seconds = run({**fixed, entry: parameter})

@@ -136,7 +136,7 @@ namespace DiskImpact
     bool                resume_sweep            = true;
     unsigned int        elements_across_contact = 12;
     double              grading                 = 0.3;
-    std::string         contact_law_constant    = "fit";
+    std::string         contact_law_constant    = "exact";
     double              margin                  = 0.2;
     unsigned int        output_interval         = 20;
     unsigned int        projected_modes         = 20;
