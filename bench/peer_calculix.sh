@@ -1,0 +1,29 @@
+#!/bin/bash
+# Peer comparison with CalculiX: the same disk impact (plane strain,
+# nu = 0.3, v = 0.1 c, half disk on a rigid wall) computed by CalculiX's ccx
+# and by build/diskimpact; prints both coefficients of restitution, their
+# difference, the DoFs, steps and wall times of both codes.
+# Installs calculix-ccx and gmsh with apt-get if ccx or gmsh is missing,
+# needs a built build/diskimpact, then runs bench/peer_calculix.py with the
+# arguments given here (e.g. --hmin 0.01 --hmax 0.1 --steps-per-contact 200).
+# Usage: bench/peer_calculix.sh [options of bench/peer_calculix.py]
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+
+if ! command -v ccx >/dev/null 2>&1 || ! command -v gmsh >/dev/null 2>&1; then
+    if [ "$(id -u)" -eq 0 ]; then
+        SUDO=""
+    else
+        SUDO="sudo"
+    fi
+    $SUDO apt-get update
+    $SUDO env DEBIAN_FRONTEND=noninteractive apt-get install -y \
+        calculix-ccx gmsh
+fi
+
+if [ ! -x build/diskimpact ]; then
+    echo "peer_calculix.sh: build/diskimpact not found; build first" >&2
+    exit 1
+fi
+
+exec python3 bench/peer_calculix.py "$@"
