@@ -17,7 +17,7 @@ namespace DiskImpact
   Parameters::declare_parameters(ParameterHandler &prm)
   {
     RunParameters::declare_parameters(prm);
-    DiskGeometry::declare_parameters(prm);
+    BodyGeometry::declare_parameters(prm);
     Material::declare_parameters(prm);
     FiniteElementParameters::declare_parameters(prm);
     ModalSolver::declare_parameters(prm);
@@ -40,6 +40,14 @@ namespace DiskImpact
     run.parameters_json = json.str();
     geometry.parse_parameters(prm);
     material.parse_parameters(prm);
+    if (geometry.is_axisymmetric())
+      {
+        require(!material.plane_model_given(),
+                "Material: 'Plane model' is a disk entry; a sphere "
+                "(Geometry: 'Body = sphere') is axisymmetric with the 3D "
+                "constants (remove 'Plane model')");
+        material.make_axisymmetric();
+      }
     finite_element.parse_parameters(prm);
     modal_solver.parse_parameters(prm);
     modal_convergence.parse_parameters(prm);
@@ -50,6 +58,14 @@ namespace DiskImpact
     impact_convergence.parse_parameters(prm);
     reference_models.parse_parameters(prm);
     modal_expansion.parse_parameters(prm);
+
+    // The sphere so far has its modal analysis and quasistatic contact;
+    // the dynamic tasks need its impact outputs and reference models first.
+    require(!geometry.is_axisymmetric() || run.task == Task::modal_analysis ||
+              run.task == Task::modal_convergence ||
+              run.task == Task::quasistatic_contact,
+            "Geometry: 'Body = sphere' is available for the tasks 'modal "
+            "analysis', 'modal convergence' and 'quasistatic contact' only");
 
     // Checks across subsections. The scales of the run must be ordinary
     // floating-point numbers, or lengths, masses and energies over- or

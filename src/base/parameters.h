@@ -32,7 +32,7 @@ namespace DiskImpact
     parse_parameters(dealii::ParameterHandler &prm);
 
     RunParameters           run;
-    DiskGeometry            geometry;
+    BodyGeometry            geometry;
     Material                material;
     FiniteElementParameters finite_element;
     ModalSolver             modal_solver;

@@ -56,11 +56,25 @@ namespace DiskImpact
       }
   }
 
+  std::string
+  to_string(const Body body)
+  {
+    return body == Body::sphere ? "sphere" : "disk";
+  }
+
   void
-  DiskGeometry::declare_parameters(ParameterHandler &prm)
+  BodyGeometry::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Geometry");
     {
+      prm.declare_entry("Body",
+                        "disk",
+                        Patterns::Selection("disk|sphere"),
+                        "'disk' (a plane model, 'Plane model' in subsection "
+                        "Material), or 'sphere': the axisymmetric model on "
+                        "the meridian half disk y >= 0 (x along the impact "
+                        "axis, y = r the distance from it), which takes no "
+                        "'Domain' and no 'Plane model'.");
       prm.declare_entry("Radius",
                         "1",
                         Patterns::Double(),
@@ -68,10 +82,12 @@ namespace DiskImpact
                         "centre is at (R, 0): it touches the plane x = 0 at "
                         "the origin.");
       prm.declare_entry("Domain",
-                        "full disk",
-                        Patterns::Selection("full disk|half disk"),
-                        "'full disk', or 'half disk' (y >= 0, symmetric about "
-                        "the impact axis y = 0: only modes even about it).");
+                        "",
+                        Patterns::Selection("|full disk|half disk"),
+                        "Disks only: 'full disk' (the default when empty), or "
+                        "'half disk' (y >= 0, symmetric about the impact axis "
+                        "y = 0: only modes even about it). Must be empty for "
+                        "a sphere, whose domain is its meridian.");
       prm.declare_entry("Mesh file",
                         "",
                         Patterns::Anything(),
@@ -94,16 +110,22 @@ namespace DiskImpact
   }
 
   void
-  DiskGeometry::parse_parameters(ParameterHandler &prm)
+  BodyGeometry::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Geometry");
-    disk_radius           = prm.get_double("Radius");
-    half_disk             = prm.get("Domain") == "half disk";
+    body_kind   = prm.get("Body") == "sphere" ? Body::sphere : Body::disk;
+    disk_radius = prm.get_double("Radius");
+    const std::string domain = prm.get("Domain");
+    half_disk             = body_kind == Body::sphere || domain == "half disk";
     mesh_file             = prm.get("Mesh file");
     n_global_refinements  = prm.get_integer("Global refinements");
     n_contact_refinements = prm.get_integer("Contact refinements");
     prm.leave_subsection();
 
+    require(body_kind == Body::disk || domain.empty(),
+            "Geometry: 'Domain = " + domain +
+              "' is a disk entry; a sphere's domain is always its meridian "
+              "(remove 'Domain')");
     require(disk_radius > 0,
             "Geometry: 'Radius' must be positive, got " +
               std::to_string(disk_radius));
@@ -115,45 +137,65 @@ namespace DiskImpact
   }
 
   double
-  DiskGeometry::radius() const
+  BodyGeometry::radius() const
   {
     return disk_radius;
   }
 
+  Body
+  BodyGeometry::body() const
+  {
+    return body_kind;
+  }
+
   bool
-  DiskGeometry::is_half_disk() const
+  BodyGeometry::is_axisymmetric() const
+  {
+    return body_kind == Body::sphere;
+  }
+
+  bool
+  BodyGeometry::is_half_disk() const
   {
     return half_disk;
   }
 
+  double
+  BodyGeometry::domain_share() const
+  {
+    return half_disk && body_kind == Body::disk ? 0.5 : 1.;
+  }
+
   Point<2>
-  DiskGeometry::center() const
+  BodyGeometry::center() const
   {
     return Point<2>(disk_radius, 0.);
   }
 
   Point<2>
-  DiskGeometry::contact_point() const
+  BodyGeometry::contact_point() const
   {
     return Point<2>(0., 0.);
   }
 
   unsigned int
-  DiskGeometry::global_refinements() const
+  BodyGeometry::global_refinements() const
   {
     return n_global_refinements;
   }
 
   void
-  DiskGeometry::set_global_refinements(const unsigned int n)
+  BodyGeometry::set_global_refinements(const unsigned int n)
   {
     n_global_refinements = n;
   }
 
   std::string
-  DiskGeometry::description() const
+  BodyGeometry::description() const
   {
-    return std::string(half_disk ? "half disk" : "full disk") +
+    return std::string(body_kind == Body::sphere ? "sphere (meridian)" :
+                       half_disk                 ? "half disk" :
+                                                   "full disk") +
            ", R = " + std::to_string(disk_radius) + ", " +
            (mesh_file.empty() ? "built-in mesh" : "mesh file " + mesh_file) +
            ", " + std::to_string(n_global_refinements) +
@@ -162,7 +204,7 @@ namespace DiskImpact
   }
 
   void
-  DiskGeometry::create_triangulation(Triangulation<2> &triangulation,
+  BodyGeometry::create_triangulation(Triangulation<2> &triangulation,
                                      const double      max_cells) const
   {
     create_coarse_triangulation(triangulation);
@@ -183,7 +225,7 @@ namespace DiskImpact
   }
 
   void
-  DiskGeometry::create_coarse_triangulation(
+  BodyGeometry::create_coarse_triangulation(
     Triangulation<2> &triangulation) const
   {
     if (mesh_file.empty())
@@ -196,7 +238,7 @@ namespace DiskImpact
   }
 
   void
-  DiskGeometry::create_builtin_coarse_mesh(
+  BodyGeometry::create_builtin_coarse_mesh(
     Triangulation<2> &triangulation) const
   {
     if (!half_disk)
@@ -220,7 +262,7 @@ namespace DiskImpact
   }
 
   void
-  DiskGeometry::read_coarse_mesh(Triangulation<2> &triangulation) const
+  BodyGeometry::read_coarse_mesh(Triangulation<2> &triangulation) const
   {
     std::ifstream in(mesh_file);
     require(static_cast<bool>(in),
@@ -247,7 +289,7 @@ namespace DiskImpact
   }
 
   void
-  DiskGeometry::set_boundary_and_manifold_ids(
+  BodyGeometry::set_boundary_and_manifold_ids(
     Triangulation<2> &triangulation) const
   {
     // Built-in meshes and gmsh files alike: a boundary face is on the curved
@@ -279,19 +321,26 @@ namespace DiskImpact
               }
             else
               throw InputError(
-                "Geometry: a boundary face of the mesh is neither on the "
-                "circle of radius 'Radius' centred at (R, 0) nor on the "
-                "symmetry line of a half disk: check 'Radius', 'Domain' and "
-                "the mesh file");
+                body_kind == Body::sphere ?
+                  "Geometry: a boundary face of the mesh is neither on the "
+                  "circle of radius 'Radius' centred at (R, 0) nor on the "
+                  "axis y = 0: a sphere needs its meridian half disk y >= 0" :
+                  "Geometry: a boundary face of the mesh is neither on the "
+                  "circle of radius 'Radius' centred at (R, 0) nor on the "
+                  "symmetry line of a half disk: check 'Radius', 'Domain' "
+                  "and the mesh file");
           }
     require(n_curved > 0, "Geometry: the mesh has no curved boundary");
     require(!half_disk || n_symmetry > 0,
-            "Geometry: 'Domain = half disk' but the mesh has no symmetry "
-            "line on y = 0");
+            body_kind == Body::sphere ?
+              "Geometry: a sphere's mesh must be its meridian half disk "
+              "y >= 0, with the axis y = 0 on its boundary" :
+              "Geometry: 'Domain = half disk' but the mesh has no symmetry "
+              "line on y = 0");
   }
 
   void
-  DiskGeometry::refine_toward_contact_point(
+  BodyGeometry::refine_toward_contact_point(
     Triangulation<2> &triangulation) const
   {
     for (unsigned int step = 1; step <= n_contact_refinements; ++step)

@@ -59,15 +59,32 @@ namespace DiskImpact
     double                    grading,
     double max_cells = std::numeric_limits<double>::infinity());
 
+  /// The body: a disk (plane strain or plane stress) or a sphere (an
+  /// axisymmetric model on its meridian).
+  enum class Body
+  {
+    disk,
+    sphere
+  };
+
+  std::string
+  to_string(Body body);
+
   /**
-   * The disk: radius, full or half domain, built-in or gmsh mesh, global
-   * refinement and graded refinement toward the contact point.
+   * The body's two-dimensional domain: radius, full or half domain, built-in or
+   * gmsh mesh, global refinement and graded refinement toward the contact
+   * point.
    *
    * The disk's centre is (R, 0), so the undeformed disk touches the plane
    * x = 0 at the contact point (0, 0); the impact axis is y = 0 and the
    * half disk is y >= 0.
+   *
+   * A sphere is the same half disk read as its meridian: x is the axial
+   * coordinate z, y the distance r from the symmetry (impact) axis, and the
+   * symmetry line y = 0 is the axis, where u_r = u_y = 0. The meridian
+   * holds both hemispheres (no mirror symmetry about the equator).
    */
-  class DiskGeometry
+  class BodyGeometry
   {
   public:
     static void
@@ -77,8 +94,20 @@ namespace DiskImpact
 
     double
     radius() const;
+    Body
+    body() const;
+    /// Whether the body is a sphere (axisymmetric on its meridian).
+    bool
+    is_axisymmetric() const;
+    /// Whether the domain is y >= 0 only: a half disk, or a sphere's
+    /// meridian.
     bool
     is_half_disk() const;
+    /// The share of the body's loads the computed domain carries: 1/2 for
+    /// a half disk, 1 for a full disk or a sphere (whose meridian's
+    /// integrals are over the whole sphere).
+    double
+    domain_share() const;
     dealii::Point<2>
     center() const;
     dealii::Point<2>
@@ -118,6 +147,7 @@ namespace DiskImpact
     void
     refine_toward_contact_point(dealii::Triangulation<2> &triangulation) const;
 
+    Body         body_kind   = Body::disk;
     double       disk_radius = 1.;
     bool         half_disk   = false;
     std::string  mesh_file;

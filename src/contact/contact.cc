@@ -224,7 +224,7 @@ namespace DiskImpact
   }
 
   void
-  ContactParameters::check_wall(const DiskGeometry &geometry,
+  ContactParameters::check_wall(const BodyGeometry &geometry,
                                 const double        max_gap) const
   {
     const double R = geometry.radius();

@@ -6,7 +6,7 @@
 
 namespace DiskImpact
 {
-  class DiskGeometry;
+  class BodyGeometry;
 
   /**
    * A rigid, frictionless plane wall: a point on it and its unit normal,
@@ -127,7 +127,7 @@ namespace DiskImpact
      * perpendicular to the symmetry axis.
      */
     void
-    check_wall(const DiskGeometry &geometry, double max_gap) const;
+    check_wall(const BodyGeometry &geometry, double max_gap) const;
 
   private:
     double      kappa = 100.;

@@ -19,7 +19,11 @@ namespace DiskImpact
   double
   ContactState::half_width() const
   {
-    return force > 0. ? 2. * std::sqrt(second_moment / force) : 0.;
+    if (!(force > 0.))
+      return 0.;
+    // Strip: int p t^2 dt / int p dt = a^2 / 4; circle (dS = 2 pi t dt):
+    // 2 a^2 / 5.
+    return std::sqrt((axisymmetric ? 2.5 : 4.) * second_moment / force);
   }
 
   ContactOperator::ContactOperator(const ElasticityOperator &op,
@@ -57,7 +61,9 @@ namespace DiskImpact
     std::vector<double>                  phi_n(dofs_per_cell);
     const FEValuesExtractors::Vector     displacement(0);
 
-    ContactState state;
+    const Section &section = op.get_section();
+    ContactState   state;
+    state.axisymmetric = section.is_axisymmetric();
     for_each_curved_edge_face(
       dof_handler, [&](const auto &cell, const unsigned int f) {
         face_values.reinit(cell, f);
@@ -73,7 +79,8 @@ namespace DiskImpact
               continue;
             in_contact      = true;
             const double p  = law.pressure(gap);
-            const double ds = face_values.JxW(q);
+            const double ds = face_values.JxW(q) *
+                              section.measure(face_values.quadrature_point(q));
             // Hertz's coordinate: along the undeformed edge (the
             // deformed edge is shorter by a strain of order a / R).
             const double t =

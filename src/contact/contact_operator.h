@@ -12,10 +12,13 @@ namespace DiskImpact
 {
   class ElasticityOperator;
 
-  /// Integrals of the wall's pressure over the disk's edge.
+  /// Integrals of the wall's pressure over the body's boundary (dS = ds
+  /// for a disk, 2 pi r ds for a sphere).
   struct ContactState
   {
-    /// int p ds: the wall's force on the disk along its normal.
+    /// Whether the body is a sphere (its pressure is Hertz's of a circle).
+    bool axisymmetric = false;
+    /// int p dS: the wall's force on the body along its normal.
     double force = 0.;
     /// int p_bar ds: the force averaged over a time step (ContactZone).
     double force_average = 0.;
@@ -27,8 +30,10 @@ namespace DiskImpact
     /// wall, from the point of the wall nearest the disk's centre.
     double second_moment = 0.;
 
-    /// Half-width of a Hertz profile p0 sqrt(1 - t^2/a^2) with the same
-    /// zeroth and second moments: a = 2 sqrt(second_moment / force).
+    /// Half-width (disk) or radius (sphere) of a Hertz profile
+    /// p0 sqrt(1 - t^2/a^2) with the same zeroth and second moments:
+    /// a = 2 sqrt(second_moment / force) on a strip, a =
+    /// sqrt(5 second_moment / (2 force)) on a circle.
     double
     half_width() const;
   };

@@ -26,6 +26,7 @@ namespace DiskImpact
                            const double              gap_bound)
       : law(law)
       , bound(gap_bound)
+      , axisymmetric(op.get_section().is_axisymmetric())
   {
     const auto &dof_handler = op.get_dof_handler();
     const auto &fe          = dof_handler.get_fe();
@@ -74,7 +75,9 @@ namespace DiskImpact
                     row[j] += weight * b;
               }
             local.insert(local.end(),
-                         {face_values.JxW(q),
+                         {face_values.JxW(q) *
+                            op.get_section().measure(
+                              face_values.quadrature_point(q)),
                           wall.gap(x[q]),
                           (x[q] - origin) * along,
                           static_cast<double>(row.size())});
@@ -214,6 +217,7 @@ namespace DiskImpact
     if (with_jacobian)
       result.jacobian.reinit(n, n);
     ContactState &state = result.state;
+    state.axisymmetric  = axisymmetric;
     for (const Point &point : points)
       {
         if (point.active_row.empty())

@@ -110,8 +110,10 @@ namespace DiskImpact
     static double
     gap(const Point &point, const dealii::Vector<double> &u);
 
-    WallLaw                                      law;
-    double                                       bound;
+    WallLaw law;
+    double  bound;
+    /// A sphere's (ContactState::axisymmetric).
+    bool                                         axisymmetric = false;
     std::vector<dealii::types::global_dof_index> dofs;
     std::vector<Point>                           points;
     /// Position in C of each DoF of D (-1: not active), and C in D.

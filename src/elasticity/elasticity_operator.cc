@@ -56,9 +56,10 @@ namespace DiskImpact
   void
   ElasticityOperator::setup(
     const parallel::distributed::Triangulation<2> &triangulation,
-    const DiskGeometry                            &geometry,
+    const BodyGeometry                            &geometry,
     const bool                                     with_tangent)
   {
+    section = Section(geometry.is_axisymmetric());
     fe      = std::make_unique<FESystem<2>>(FE_Q<2>(fe_degree), 2);
     mapping = std::make_unique<MappingQ<2>>(fe_degree);
 
@@ -192,7 +193,8 @@ namespace DiskImpact
     FEValues<2>        fe_values(*mapping,
                           *fe,
                           quadrature,
-                          update_values | update_gradients | update_JxW_values);
+                          update_values | update_gradients |
+                            update_quadrature_points | update_JxW_values);
     const unsigned int dofs_per_cell = fe->n_dofs_per_cell();
     FullMatrix<double> cell_mass(dofs_per_cell, dofs_per_cell);
     FullMatrix<double> cell_stiffness(dofs_per_cell, dofs_per_cell);
@@ -203,7 +205,20 @@ namespace DiskImpact
     const SymmetricTensor<4, 2> c   = material.stiffness_tensor();
     const SymmetricTensor<4, 2> d   = material.damping_tensor();
     const double                rho = material.density();
-    with_damping                    = material.is_viscous();
+    // Axisymmetric: the hoop strain h adds lambda (tr eps h' + h tr eps')
+    // + (lambda + 2 mu) h h' to eps : C : eps' (and tau times that to the
+    // Kelvin-Voigt form; the constants are 3D, as in plane strain).
+    const double lambda      = material.lame_lambda();
+    const double mu          = material.shear_modulus();
+    const double tau         = material.relaxation_time();
+    auto         hoop_energy = [&](const double tr_i,
+                           const double h_i,
+                           const double tr_j,
+                           const double h_j) {
+      return lambda * (tr_i * h_j + h_i * tr_j) +
+             (lambda + 2. * mu) * h_i * h_j;
+    };
+    with_damping = material.is_viscous();
     if (with_damping)
       {
         damping.reinit(stiffness);
@@ -212,6 +227,7 @@ namespace DiskImpact
 
     std::vector<SymmetricTensor<2, 2>> eps(dofs_per_cell);
     std::vector<Tensor<1, 2>>          phi(dofs_per_cell);
+    std::vector<double> hoop(dofs_per_cell), trace(dofs_per_cell);
 
     mass      = 0.;
     stiffness = 0.;
@@ -224,21 +240,29 @@ namespace DiskImpact
           cell_damping   = 0.;
           for (const unsigned int q : fe_values.quadrature_point_indices())
             {
+              const Point<2> &x = fe_values.quadrature_point(q);
               for (unsigned int i = 0; i < dofs_per_cell; ++i)
                 {
-                  phi[i] = fe_values[displacement].value(i, q);
-                  eps[i] = fe_values[displacement].symmetric_gradient(i, q);
+                  phi[i]   = fe_values[displacement].value(i, q);
+                  eps[i]   = fe_values[displacement].symmetric_gradient(i, q);
+                  hoop[i]  = section.hoop_strain(phi[i], x);
+                  trace[i] = dealii::trace(eps[i]);
                 }
-              const double dx = fe_values.JxW(q);
+              const double dx = fe_values.JxW(q) * section.measure(x);
               for (unsigned int i = 0; i < dofs_per_cell; ++i)
                 {
                   const SymmetricTensor<2, 2> c_eps_i = c * eps[i];
                   const SymmetricTensor<2, 2> d_eps_i = d * eps[i];
                   for (unsigned int j = 0; j < dofs_per_cell; ++j)
                     {
+                      const double h_ij =
+                        section.is_axisymmetric() ?
+                          hoop_energy(trace[i], hoop[i], trace[j], hoop[j]) :
+                          0.;
                       cell_mass(i, j) += rho * (phi[i] * phi[j]) * dx;
-                      cell_stiffness(i, j) += (c_eps_i * eps[j]) * dx;
-                      cell_damping(i, j) += (d_eps_i * eps[j]) * dx;
+                      cell_stiffness(i, j) += (c_eps_i * eps[j] + h_ij) * dx;
+                      cell_damping(i, j) +=
+                        (d_eps_i * eps[j] + tau * h_ij) * dx;
                     }
                 }
             }
@@ -288,7 +312,8 @@ namespace DiskImpact
     FEValues<2>                          fe_values(*mapping,
                           *fe,
                           quadrature,
-                          update_values | update_JxW_values);
+                          update_values | update_quadrature_points |
+                            update_JxW_values);
     const unsigned int                   dofs_per_cell = fe->n_dofs_per_cell();
     Vector<double>                       cell_f(dofs_per_cell);
     std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
@@ -303,11 +328,32 @@ namespace DiskImpact
             for (unsigned int i = 0; i < dofs_per_cell; ++i)
               cell_f(i) += force_per_area *
                            fe_values[displacement].value(i, q) *
-                           fe_values.JxW(q);
+                           fe_values.JxW(q) *
+                           section.measure(fe_values.quadrature_point(q));
           cell->get_dof_indices(dof_indices);
           constraints.distribute_local_to_global(cell_f, dof_indices, f);
         }
     f.compress(VectorOperation::add);
+  }
+
+  double
+  ElasticityOperator::volume() const
+  {
+    const QGauss<2> quadrature(fe_degree + 1);
+    FEValues<2>     fe_values(*mapping,
+                          *fe,
+                          quadrature,
+                          update_quadrature_points | update_JxW_values);
+    double          sum = 0.;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          for (const unsigned int q : fe_values.quadrature_point_indices())
+            sum +=
+              fe_values.JxW(q) * section.measure(fe_values.quadrature_point(q));
+        }
+    return Utilities::MPI::sum(sum, dof_handler.get_communicator());
   }
 
   Tensor<1, 2>
@@ -318,10 +364,11 @@ namespace DiskImpact
     FEValues<2>               fe_values(*mapping,
                           *fe,
                           quadrature,
-                          update_values | update_JxW_values);
+                          update_values | update_quadrature_points |
+                            update_JxW_values);
     std::vector<Tensor<1, 2>> u(quadrature.size());
     Tensor<1, 2>              integral;
-    double                    area = 0.;
+    double                    volume = 0.;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -330,13 +377,19 @@ namespace DiskImpact
             ghosted_u, u);
           for (const unsigned int q : fe_values.quadrature_point_indices())
             {
-              integral += u[q] * fe_values.JxW(q);
-              area += fe_values.JxW(q);
+              const double dv = fe_values.JxW(q) *
+                                section.measure(fe_values.quadrature_point(q));
+              integral += u[q] * dv;
+              volume += dv;
             }
         }
+    // On a body of revolution the radial displacements cancel in the 3D
+    // mean: the centre of mass moves along the axis only.
+    if (section.is_axisymmetric())
+      integral[1] = 0.;
     const MPI_Comm comm = dof_handler.get_communicator();
     return Utilities::MPI::sum(integral, comm) /
-           Utilities::MPI::sum(area, comm);
+           Utilities::MPI::sum(volume, comm);
   }
 
   Tensor<1, 2>
@@ -376,6 +429,12 @@ namespace DiskImpact
   ElasticityOperator::tangent_matrix() const
   {
     return tangent;
+  }
+
+  const Section &
+  ElasticityOperator::get_section() const
+  {
+    return section;
   }
 
   const DoFHandler<2> &

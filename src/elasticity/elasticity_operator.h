@@ -1,6 +1,7 @@
 #pragma once
 
 #include "elasticity/material.h"
+#include "elasticity/section.h"
 
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/parameter_handler.h>
@@ -21,7 +22,7 @@
 
 namespace DiskImpact
 {
-  class DiskGeometry;
+  class BodyGeometry;
 
   /// Subsection "Finite element": the polynomial degree of the elements.
   struct FiniteElementParameters
@@ -35,10 +36,11 @@ namespace DiskImpact
   };
 
   /**
-   * The discrete linear elasticity operator of the disk: vector Q_k elements
+   * The discrete linear elasticity operator of the body: vector Q_k elements
    * with a degree-k boundary mapping, the constraints (hanging nodes, the
-   * symmetry condition u_y = 0 of a half disk), and the mass and stiffness
-   * matrices as distributed PETSc matrices.
+   * symmetry condition u_y = 0 of a half disk or on a sphere's axis), and
+   * the mass and stiffness matrices as distributed PETSc matrices, planar or
+   * axisymmetric (Section).
    */
   class ElasticityOperator
   {
@@ -52,7 +54,7 @@ namespace DiskImpact
     /// (with @p with_tangent also a matrix of K's pattern for Newton).
     void
     setup(const dealii::parallel::distributed::Triangulation<2> &triangulation,
-          const DiskGeometry                                    &geometry,
+          const BodyGeometry                                    &geometry,
           bool with_tangent = false);
 
     /**
@@ -71,7 +73,9 @@ namespace DiskImpact
     n_massless_dofs() const;
 
     /// Assemble M (rho u.v) and K (eps(u) : C : eps(v)), and for a viscous
-    /// material the damping matrix (eps(u) : D : eps(v), Kelvin-Voigt).
+    /// material the damping matrix (eps(u) : D : eps(v), Kelvin-Voigt);
+    /// each over the body's volume (Section), with the hoop strain of an
+    /// axisymmetric body.
     void
     assemble(const Material &material);
     /// Whether assemble() built a damping matrix.
@@ -93,13 +97,19 @@ namespace DiskImpact
     void
     move_constrained_eigenvalues(double eigenvalue);
 
-    /// f_i = int b . v_i for a uniform body force @p force_per_area.
+    /// f_i = int b . v_i dV for a uniform body force @p force_per_area (per
+    /// volume for a sphere).
     void
     assemble_body_force(const dealii::Tensor<1, 2>         &force_per_area,
                         dealii::PETScWrappers::MPI::Vector &f) const;
 
-    /// Area average of the displacement: the centre of mass's displacement
-    /// for a uniform density.
+    /// The body's volume (its area for a disk of unit thickness), with the
+    /// quadrature of assemble_body_force().
+    double
+    volume() const;
+
+    /// Volume average of the displacement: the centre of mass's
+    /// displacement for a uniform density (on a sphere along the axis only).
     dealii::Tensor<1, 2>
     mean_displacement(
       const dealii::PETScWrappers::MPI::Vector &ghosted_u) const;
@@ -116,6 +126,9 @@ namespace DiskImpact
     const dealii::PETScWrappers::MPI::SparseMatrix &
     tangent_matrix() const;
 
+    /// Planar or axisymmetric (set by setup() from the geometry).
+    const Section &
+    get_section() const;
     const dealii::DoFHandler<2> &
     get_dof_handler() const;
     const dealii::MappingQ<2> &
@@ -142,6 +155,7 @@ namespace DiskImpact
 
   private:
     const unsigned int fe_degree;
+    Section            section;
 
     std::unique_ptr<dealii::FESystem<2>> fe;
     std::unique_ptr<dealii::MappingQ<2>> mapping;

@@ -15,12 +15,13 @@ namespace DiskImpact
     prm.enter_subsection("Material");
     {
       prm.declare_entry("Plane model",
-                        "plane strain",
-                        Patterns::Selection("plane strain|plane stress"),
-                        "'plane strain' (long cylinder; Young modulus and "
-                        "Poisson ratio are the 3D constants) or 'plane "
-                        "stress' (thin plate; the constants are the in-plane "
-                        "ones).");
+                        "",
+                        Patterns::Selection("|plane strain|plane stress"),
+                        "Disks only: 'plane strain' (long cylinder; Young "
+                        "modulus and Poisson ratio are the 3D constants; the "
+                        "default when empty) or 'plane stress' (thin plate; "
+                        "the constants are the in-plane ones). Must be empty "
+                        "for a sphere, whose constants are the 3D ones.");
       prm.declare_entry("Young modulus",
                         "1",
                         Patterns::Double(),
@@ -36,7 +37,8 @@ namespace DiskImpact
                         "1",
                         Patterns::Double(),
                         "Mass density rho [mass/area, i.e. per unit "
-                        "thickness]. Must be positive.");
+                        "thickness, for a disk; mass/volume for a sphere]. "
+                        "Must be positive.");
       prm.declare_entry("Relaxation time",
                         "0",
                         Patterns::Double(),
@@ -63,9 +65,10 @@ namespace DiskImpact
   Material::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Material");
-    const PlaneModel m = prm.get("Plane model") == "plane strain" ?
-                           PlaneModel::plane_strain :
-                           PlaneModel::plane_stress;
+    const std::string name = prm.get("Plane model");
+    model_given            = !name.empty();
+    const PlaneModel m     = name == "plane stress" ? PlaneModel::plane_stress :
+                                                      PlaneModel::plane_strain;
     set(m,
         prm.get_double("Young modulus"),
         prm.get_double("Poisson ratio"),
@@ -92,11 +95,11 @@ namespace DiskImpact
     require(relaxation_time >= 0,
             "Material: 'Relaxation time' must not be negative, got " +
               std::to_string(relaxation_time));
-    if (plane_model == PlaneModel::plane_strain)
+    if (plane_model != PlaneModel::plane_stress)
       require(poisson_ratio > -1 && poisson_ratio < 0.5,
-              "Material: 'Poisson ratio' must satisfy -1 < nu < 0.5 in plane "
-              "strain (the plane-strain stiffness is infinite at nu = 0.5), "
-              "got " +
+              "Material: 'Poisson ratio' must satisfy -1 < nu < 0.5 in " +
+                DiskImpact::plane_model_name(plane_model) +
+                " (the bulk modulus is infinite at nu = 0.5), got " +
                 std::to_string(poisson_ratio));
     else
       require(poisson_ratio > -1 && poisson_ratio <= 0.5,
@@ -108,6 +111,21 @@ namespace DiskImpact
     poisson        = poisson_ratio;
     rho            = density;
     relaxation_tau = relaxation_time;
+  }
+
+  bool
+  Material::plane_model_given() const
+  {
+    return model_given;
+  }
+
+  void
+  Material::make_axisymmetric()
+  {
+    require(shear_eta == 0. && bulk_eta == 0.,
+            "Material: 'Shear viscosity' and 'Bulk viscosity' are in-plane "
+            "viscosities of a disk; a sphere takes 'Relaxation time' only");
+    set(PlaneModel::axisymmetric, young, poisson, rho, relaxation_tau);
   }
 
   double
@@ -139,9 +157,24 @@ namespace DiskImpact
   }
 
   std::string
+  plane_model_name(const PlaneModel model)
+  {
+    switch (model)
+      {
+        case PlaneModel::plane_strain:
+          return "plane strain";
+        case PlaneModel::plane_stress:
+          return "plane stress";
+        case PlaneModel::axisymmetric:
+          return "axisymmetric";
+      }
+    return "unknown";
+  }
+
+  std::string
   Material::plane_model_name() const
   {
-    return model == PlaneModel::plane_strain ? "plane strain" : "plane stress";
+    return DiskImpact::plane_model_name(model);
   }
 
   double
@@ -159,16 +192,15 @@ namespace DiskImpact
   double
   Material::in_plane_young_modulus() const
   {
-    return model == PlaneModel::plane_strain ?
-             young / (1. - poisson * poisson) :
-             young;
+    return model == PlaneModel::plane_stress ? young :
+                                               young / (1. - poisson * poisson);
   }
 
   double
   Material::in_plane_poisson_ratio() const
   {
-    return model == PlaneModel::plane_strain ? poisson / (1. - poisson) :
-                                               poisson;
+    return model == PlaneModel::plane_stress ? poisson :
+                                               poisson / (1. - poisson);
   }
 
   double

@@ -8,12 +8,20 @@
 
 namespace DiskImpact
 {
-  /// How the two-dimensional disk is obtained from a three-dimensional body.
+  /// How the two-dimensional model is obtained from a three-dimensional
+  /// body.
   enum class PlaneModel
   {
     plane_strain,
-    plane_stress
+    plane_stress,
+    /// A body of revolution on its meridian (the sphere): the 3D constants,
+    /// with the in-plane constants of plane strain for the meridian's
+    /// strains and the hoop strain added by the weak form.
+    axisymmetric
   };
+
+  std::string
+  plane_model_name(PlaneModel model);
 
   /**
    * A linear elastic (optionally Kelvin-Voigt) isotropic material in two
@@ -29,6 +37,14 @@ namespace DiskImpact
     declare_parameters(dealii::ParameterHandler &prm);
     void
     parse_parameters(dealii::ParameterHandler &prm);
+
+    /// Whether 'Plane model' was given (it must not be for a sphere).
+    bool
+    plane_model_given() const;
+    /// Switch to the axisymmetric model (a sphere), keeping the constants;
+    /// the in-plane viscosities must be zero.
+    void
+    make_axisymmetric();
 
     /// Set the constants directly (as parse_parameters() does), with checks.
     void
@@ -105,6 +121,7 @@ namespace DiskImpact
 
   private:
     PlaneModel model          = PlaneModel::plane_strain;
+    bool       model_given    = true;
     double     young          = 1.;
     double     poisson        = 0.3;
     double     rho            = 1.;

@@ -8,23 +8,76 @@ namespace DiskImpact
 
   namespace
   {
-    /// sigma = C : eps with eps the symmetric part of grad u (row i the
-    /// gradient of u_i).
+    /// eps, the symmetric part of grad u (row i the gradient of u_i).
     SymmetricTensor<2, 2>
-    stress_from_gradient(const SymmetricTensor<4, 2>     &stiffness,
-                         const std::vector<Tensor<1, 2>> &gradient)
+    strain_from_gradient(const std::vector<Tensor<1, 2>> &gradient)
     {
       SymmetricTensor<2, 2> strain;
       for (unsigned int i = 0; i < 2; ++i)
         for (unsigned int j = i; j < 2; ++j)
           strain[i][j] = 0.5 * (gradient[i][j] + gradient[j][i]);
-      return stiffness * strain;
+      return strain;
+    }
+
+    bool
+    is_axisymmetric(const Material &material)
+    {
+      return material.plane_model() == PlaneModel::axisymmetric;
+    }
+
+    UpdateFlags
+    needed_flags(const Material &material)
+    {
+      return is_axisymmetric(material) ?
+               update_values | update_gradients | update_quadrature_points :
+               update_gradients;
+    }
+
+    /// The stress at output point @p q (the out-of-plane part planar:
+    /// @p out_of_plane_ratio times the in-plane trace).
+    SectionStress
+    section_stress(const Material                           &material,
+                   const DataPostprocessorInputs::Vector<2> &inputs,
+                   const unsigned int                        q,
+                   const double out_of_plane_ratio = 0.)
+    {
+      const SymmetricTensor<2, 2> strain =
+        strain_from_gradient(inputs.solution_gradients[q]);
+      SectionStress stress;
+      stress.in_plane = material.stiffness_tensor() * strain;
+      if (!is_axisymmetric(material))
+        {
+          stress.out_of_plane = out_of_plane_ratio * trace(stress.in_plane);
+          return stress;
+        }
+      // eps_theta = u_r / r, and du_r/dr where r = 0 (u_r = 0 there).
+      const double r = inputs.evaluation_points[q][1];
+      const double hoop =
+        std::abs(r) > 1e-12 * inputs.evaluation_points[q].norm() ?
+          inputs.solution_values[q][1] / r :
+          inputs.solution_gradients[q][1][1];
+      const double lambda = material.lame_lambda();
+      stress.in_plane += lambda * hoop * unit_symmetric_tensor<2>();
+      stress.out_of_plane =
+        lambda * (trace(strain) + hoop) + 2. * material.shear_modulus() * hoop;
+      return stress;
     }
   } // namespace
 
+  SymmetricTensor<2, 3>
+  SectionStress::three_dimensional() const
+  {
+    SymmetricTensor<2, 3> full;
+    for (unsigned int i = 0; i < 2; ++i)
+      for (unsigned int j = i; j < 2; ++j)
+        full[i][j] = in_plane[i][j];
+    full[2][2] = out_of_plane;
+    return full;
+  }
+
   StressPostprocessor::StressPostprocessor(const Material &material)
-      : DataPostprocessorTensor<2>("stress", update_gradients)
-      , stiffness(material.stiffness_tensor())
+      : DataPostprocessorTensor<2>("stress", needed_flags(material))
+      , material(material)
   {
   }
 
@@ -36,7 +89,7 @@ namespace DiskImpact
     for (unsigned int q = 0; q < inputs.solution_gradients.size(); ++q)
       {
         const SymmetricTensor<2, 2> stress =
-          stress_from_gradient(stiffness, inputs.solution_gradients[q]);
+          section_stress(material, inputs, q).in_plane;
         for (unsigned int i = 0; i < 2; ++i)
           for (unsigned int j = 0; j < 2; ++j)
             computed_quantities[q][Tensor<2, 2>::component_to_unrolled_index(
@@ -46,24 +99,12 @@ namespace DiskImpact
 
   StressScalarsPostprocessor::StressScalarsPostprocessor(
     const Material &material)
-      : stiffness(material.stiffness_tensor())
+      : material(material)
       , out_of_plane_ratio(material.plane_model() == PlaneModel::plane_strain ?
                              material.in_plane_poisson_ratio() /
                                (1. + material.in_plane_poisson_ratio()) :
                              0.)
   {
-  }
-
-  SymmetricTensor<2, 3>
-  StressScalarsPostprocessor::three_dimensional_stress(
-    const SymmetricTensor<2, 2> &stress) const
-  {
-    SymmetricTensor<2, 3> full;
-    for (unsigned int i = 0; i < 2; ++i)
-      for (unsigned int j = i; j < 2; ++j)
-        full[i][j] = stress[i][j];
-    full[2][2] = out_of_plane_ratio * trace(stress);
-    return full;
   }
 
   void
@@ -73,9 +114,10 @@ namespace DiskImpact
   {
     for (unsigned int q = 0; q < inputs.solution_gradients.size(); ++q)
       {
-        const SymmetricTensor<2, 2> stress =
-          stress_from_gradient(stiffness, inputs.solution_gradients[q]);
-        const SymmetricTensor<2, 3> full = three_dimensional_stress(stress);
+        const SectionStress section =
+          section_stress(material, inputs, q, out_of_plane_ratio);
+        const SymmetricTensor<2, 2> &stress = section.in_plane;
+        const SymmetricTensor<2, 3>  full   = section.three_dimensional();
         // Mohr's circle: centre and radius. deal.II's eigenvalues() goes
         // through tr^2 - 4 det, which loses half the digits of sigma_1 -
         // sigma_2 when the two are close (its documented warning).
@@ -109,6 +151,6 @@ namespace DiskImpact
   UpdateFlags
   StressScalarsPostprocessor::get_needed_update_flags() const
   {
-    return update_gradients;
+    return needed_flags(material);
   }
 } // namespace DiskImpact

@@ -9,8 +9,26 @@
 
 namespace DiskImpact
 {
+  /**
+   * The elastic stress of a displacement field at one output point: the
+   * section's in-plane stress and the out-of-plane component sigma_zz (a
+   * disk) or the hoop stress sigma_theta (a sphere, axisymmetric: the hoop
+   * strain u_r / r, its limit du_r/dr on the axis, adds lambda eps_theta
+   * to the in-plane normal stresses).
+   */
+  struct SectionStress
+  {
+    dealii::SymmetricTensor<2, 2> in_plane;
+    double                        out_of_plane = 0.;
+
+    /// The full 3D stress (out_of_plane as the third diagonal entry).
+    dealii::SymmetricTensor<2, 3>
+    three_dimensional() const;
+  };
+
   /// The Cauchy stress sigma = C : eps(u) of a displacement field, as a
-  /// tensor field "stress" for ParaView.
+  /// tensor field "stress" for ParaView (the meridian's components on a
+  /// sphere).
   class StressPostprocessor : public dealii::DataPostprocessorTensor<2>
   {
   public:
@@ -22,7 +40,7 @@ namespace DiskImpact
       std::vector<dealii::Vector<double>> &computed_quantities) const override;
 
   private:
-    dealii::SymmetricTensor<4, 2> stiffness;
+    Material material;
   };
 
   /**
@@ -40,7 +58,8 @@ namespace DiskImpact
    * from Mohr's circle (sigma_xx + sigma_yy) / 2 +-
    * sqrt(((sigma_xx - sigma_yy) / 2)^2 + sigma_xy^2); sigma_zz is the third.
    * Like "stress", the elastic stress C : eps (no Kelvin-Voigt viscous
-   * part).
+   * part). On a sphere the third principal stress is the hoop stress
+   * (SectionStress).
    */
   class StressScalarsPostprocessor : public dealii::DataPostprocessor<2>
   {
@@ -62,12 +81,8 @@ namespace DiskImpact
     dealii::UpdateFlags
     get_needed_update_flags() const override;
 
-    /// The 3D stress of an in-plane stress under the plane model.
-    dealii::SymmetricTensor<2, 3>
-    three_dimensional_stress(const dealii::SymmetricTensor<2, 2> &stress) const;
-
   private:
-    dealii::SymmetricTensor<4, 2> stiffness;
+    Material material;
     /// sigma_zz / (sigma_xx + sigma_yy): 0 (plane stress) or nu (plane strain).
     double out_of_plane_ratio;
   };

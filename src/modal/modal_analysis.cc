@@ -3,6 +3,8 @@
 #include "base/run_error.h"
 #include "output/atomic_file.h"
 #include "output/csv_table.h"
+#include "reference/free_disk_modes.h"
+#include "reference/free_sphere_modes.h"
 
 #include <deal.II/base/utilities.h>
 
@@ -20,12 +22,18 @@ namespace DiskImpact
 {
   using namespace dealii;
 
-  Reference::FreeDiskModes
-  analytic_disk_modes(const DiskGeometry &geometry, const Material &material)
+  std::unique_ptr<Reference::FreeBodyModes>
+  analytic_free_modes(const BodyGeometry &geometry, const Material &material)
   {
-    return Reference::FreeDiskModes(material.in_plane_poisson_ratio(),
-                                    material.longitudinal_wave_speed(),
-                                    geometry.radius());
+    if (geometry.body() == Body::sphere)
+      return std::make_unique<Reference::FreeSphereModes>(
+        material.poisson_ratio(),
+        material.longitudinal_wave_speed(),
+        geometry.radius());
+    return std::make_unique<Reference::FreeDiskModes>(
+      material.in_plane_poisson_ratio(),
+      material.longitudinal_wave_speed(),
+      geometry.radius());
   }
 
   bool
@@ -40,7 +48,7 @@ namespace DiskImpact
     return omega / omega_exact - 1.;
   }
 
-  ModalAnalysis::ModalAnalysis(const DiskGeometry &geometry,
+  ModalAnalysis::ModalAnalysis(const BodyGeometry &geometry,
                                const Material     &material,
                                unsigned int        fe_degree,
                                const ModalSolver  &solver,
@@ -106,21 +114,25 @@ namespace DiskImpact
     const auto labels = label_modes(basis.eigenvalues,
                                     harmonics,
                                     1e-6 * scale,
-                                    geometry.is_half_disk());
+                                    geometry.is_half_disk(),
+                                    geometry.is_axisymmetric() ?
+                                      Reference::ModeFamily::spheroidal :
+                                      Reference::ModeFamily::mixed);
 
-    const auto              reference = analytic_disk_modes(geometry, material);
+    const auto              reference = analytic_free_modes(geometry, material);
     std::vector<ModeResult> modes;
     unsigned int            n_elastic_found = 0;
     for (unsigned int i = 0; i < labels.size(); ++i)
       {
         ModeResult mode;
-        mode.index             = i;
-        mode.omega             = basis.omega(i);
-        mode.label             = labels[i].label;
-        mode.harmonic_fraction = labels[i].harmonic_fraction;
+        mode.index               = i;
+        mode.omega               = basis.omega(i);
+        mode.label               = labels[i].label;
+        mode.harmonic_fraction   = labels[i].harmonic_fraction;
+        mode.even_order_fraction = harmonics[i].even_order_fraction();
         if (!mode.is_rigid())
           {
-            mode.omega_exact = reference.omega(mode.label);
+            mode.omega_exact = reference->omega(mode.label);
             // Keep the extra mode only if it completes the last pair.
             if (n_elastic_found == n_elastic &&
                 !(mode.label == modes.back().label))
@@ -134,16 +146,20 @@ namespace DiskImpact
 
   void
   ModalAnalysis::write_modes_csv(const std::vector<ModeResult> &modes,
-                                 const std::string             &filename)
+                                 const std::string             &filename,
+                                 const bool                     with_z_parity)
   {
-    CsvTable table({"index",
-                    "omega",
-                    "n",
-                    "l",
-                    "family",
-                    "omega_exact",
-                    "relative_error",
-                    "boundary_harmonic_fraction"});
+    std::vector<std::string> columns{"index",
+                                     "omega",
+                                     "n",
+                                     "l",
+                                     "family",
+                                     "omega_exact",
+                                     "relative_error",
+                                     "boundary_harmonic_fraction"};
+    if (with_z_parity)
+      columns.push_back("z_parity");
+    CsvTable table(columns);
     for (const auto &mode : modes)
       {
         table.start_row();
@@ -165,6 +181,9 @@ namespace DiskImpact
             table.add(mode.relative_error());
           }
         table.add(mode.harmonic_fraction);
+        if (with_z_parity)
+          table.add(
+            std::string(mode.even_order_fraction > 0.5 ? "even" : "odd"));
       }
     table.write(filename);
   }
@@ -211,7 +230,7 @@ namespace DiskImpact
                              ConditionalOStream            &out)
   {
     std::ostringstream s;
-    s << " mode   n   l  family          omega (FE)       omega (Bessel)"
+    s << " mode   n   l  family          omega (FE)       omega (exact) "
          "   rel. error\n";
     for (const auto &mode : modes)
       {

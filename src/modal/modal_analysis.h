@@ -11,6 +11,7 @@
 
 #include <deal.II/distributed/tria.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,9 @@ namespace DiskImpact
     double               omega = 0.;
     Reference::ModeLabel label;
     double               harmonic_fraction = 1.;
+    /// Share of the boundary motion's power in even orders (a sphere's
+    /// z-parity: even above 1/2).
+    double even_order_fraction = 1.;
     /// The analytic omega of the same label; 0 for rigid modes.
     double omega_exact = 0.;
 
@@ -33,21 +37,21 @@ namespace DiskImpact
     relative_error() const;
   };
 
-  /// The analytic free-disk modes of the disk @p geometry and @p material
-  /// describe.
-  Reference::FreeDiskModes
-  analytic_disk_modes(const DiskGeometry &geometry, const Material &material);
+  /// The analytic free modes of the body (disk: Bessel, sphere: Lamb)
+  /// @p geometry and @p material describe.
+  std::unique_ptr<Reference::FreeBodyModes>
+  analytic_free_modes(const BodyGeometry &geometry, const Material &material);
 
   /**
-   * Modal analysis of the free disk on one mesh and degree: builds the mesh
+   * Modal analysis of the free body on one mesh and degree: builds the mesh
    * and the elasticity operator, solves the eigenproblem, labels each mode
-   * (n, l, family) from its edge motion and compares it with the analytic
-   * Bessel mode of the same label.
+   * (n, l, family) from its boundary motion and compares it with the
+   * analytic mode of the same label.
    */
   class ModalAnalysis
   {
   public:
-    ModalAnalysis(const DiskGeometry  &geometry,
+    ModalAnalysis(const BodyGeometry  &geometry,
                   const Material      &material,
                   unsigned int         fe_degree,
                   const ModalSolver   &solver,
@@ -67,10 +71,11 @@ namespace DiskImpact
     unsigned int
     n_cells() const;
 
-    /// modes.csv (interface.md).
+    /// modes.csv (interface.md); a sphere's has the z_parity column.
     static void
     write_modes_csv(const std::vector<ModeResult> &modes,
-                    const std::string             &filename);
+                    const std::string             &filename,
+                    bool                           with_z_parity = false);
     /// Mode shapes (field mode_NNN per mode) as modes.pvd + modes_*.vtu.
     void
     write_mode_shapes(const std::vector<ModeResult> &modes,
@@ -81,7 +86,7 @@ namespace DiskImpact
                 dealii::ConditionalOStream    &out);
 
   private:
-    const DiskGeometry                             &geometry;
+    const BodyGeometry                             &geometry;
     const Material                                 &material;
     const ModalSolver                              &solver;
     MPI_Comm                                        communicator;

@@ -12,7 +12,7 @@ namespace DiskImpact
   using namespace dealii;
 
   ModalProjection::ModalProjection(ElasticityOperator &op,
-                                   const DiskGeometry &geometry,
+                                   const BodyGeometry &geometry,
                                    const double        eigenvalue_scale,
                                    const unsigned int  n_elastic_modes)
   {

@@ -11,7 +11,7 @@
 namespace DiskImpact
 {
   class CsvTable;
-  class DiskGeometry;
+  class BodyGeometry;
   class ElasticityOperator;
 
   /**
@@ -29,7 +29,7 @@ namespace DiskImpact
     /// Modes of @p op (assembled; its constrained rows get a far
     /// eigenvalue, harmless for time stepping, where they are zeroed).
     ModalProjection(ElasticityOperator &op,
-                    const DiskGeometry &geometry,
+                    const BodyGeometry &geometry,
                     double              eigenvalue_scale,
                     unsigned int        n_elastic_modes);
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "reference/free_disk_modes.h"
+#include "reference/free_body_modes.h"
 
 #include <deal.II/lac/petsc_vector.h>
 
@@ -9,7 +9,7 @@
 namespace DiskImpact
 {
   class ElasticityOperator;
-  class DiskGeometry;
+  class BodyGeometry;
 
   /**
    * Angular harmonic content of a displacement field on the curved edge:
@@ -17,6 +17,10 @@ namespace DiskImpact
    * each normalised by the integral of cos^2 or sin^2 over the edge. On the
    * half circle of a half disk only the symmetric parts count: u_r in
    * cos(n phi), u_phi in sin(n phi).
+   *
+   * On a sphere (axisymmetric section) the harmonics are Legendre's: u_r in
+   * P_n(cos theta), u_theta in dP_n/dtheta, over the surface
+   * (sin theta dtheta), theta the polar angle from the axis.
    */
   struct HarmonicContent
   {
@@ -29,6 +33,10 @@ namespace DiskImpact
     /// Share of the total power in dominant_order().
     double
     dominant_fraction() const;
+    /// Share of the total power in the even orders; for a sphere the
+    /// z-parity about the equator (P_n(-x) = (-1)^n P_n(x)).
+    double
+    even_order_fraction() const;
   };
 
   /// A computed mode's label and how clearly its edge motion shows it.
@@ -42,20 +50,23 @@ namespace DiskImpact
   HarmonicContent
   compute_boundary_harmonics(
     const ElasticityOperator                 &op,
-    const DiskGeometry                       &geometry,
+    const BodyGeometry                       &geometry,
     const dealii::PETScWrappers::MPI::Vector &ghosted_displacement,
     unsigned int                              n_max);
 
   /**
    * Label modes sorted by eigenvalue: rigid below @p rigid_eigenvalue;
    * otherwise n from the dominant harmonic, the family (radial or
-   * torsional for n = 0, mixed otherwise) from which component carries it,
-   * and l by counting the modes of the same (n, family) met so far, each
-   * n >= 1 counted once per orientation (twice on the full disk).
+   * torsional for n = 0, @p coupled_family otherwise: mixed on a disk,
+   * spheroidal on a sphere) from which component carries it, and l by
+   * counting the modes of the same (n, family) met so far, each n >= 1
+   * counted once per orientation (twice on the full disk).
    */
   std::vector<LabelledMode>
-  label_modes(const std::vector<double>          &eigenvalues,
-              const std::vector<HarmonicContent> &harmonics,
-              double                              rigid_eigenvalue,
-              bool                                half_disk);
+  label_modes(
+    const std::vector<double>          &eigenvalues,
+    const std::vector<HarmonicContent> &harmonics,
+    double                              rigid_eigenvalue,
+    bool                                half_disk,
+    Reference::ModeFamily coupled_family = Reference::ModeFamily::mixed);
 } // namespace DiskImpact

@@ -1,6 +1,6 @@
 #include "reference/free_disk_modes.h"
 
-#include <boost/math/tools/roots.hpp>
+#include "reference/root_scan.h"
 
 #include <algorithm>
 #include <cmath>
@@ -36,39 +36,6 @@ namespace DiskImpact
                (1. - double(n) * n / (x * x)) * bessel_j(n, x);
       }
     } // namespace
-
-    std::string
-    to_string(const ModeFamily family)
-    {
-      switch (family)
-        {
-          case ModeFamily::rigid:
-            return "rigid";
-          case ModeFamily::radial:
-            return "radial";
-          case ModeFamily::torsional:
-            return "torsional";
-          case ModeFamily::mixed:
-            return "mixed";
-        }
-      return "unknown";
-    }
-
-    bool
-    ModeLabel::operator==(const ModeLabel &other) const
-    {
-      return n == other.n && l == other.l && family == other.family;
-    }
-
-    bool
-    ModeLabel::operator<(const ModeLabel &other) const
-    {
-      if (n != other.n)
-        return n < other.n;
-      if (family != other.family)
-        return family < other.family;
-      return l < other.l;
-    }
 
     FreeDiskModes::FreeDiskModes(const double in_plane_poisson_ratio,
                                  const double longitudinal_wave_speed,
@@ -168,9 +135,12 @@ namespace DiskImpact
           case ModeFamily::mixed:
             return boundary_determinant(n, kappa);
           case ModeFamily::rigid:
+          case ModeFamily::spheroidal:
             break;
         }
-      throw std::invalid_argument("frequency_equation: rigid modes have none");
+      throw std::invalid_argument(
+        "frequency_equation: a disk's families are radial, torsional and "
+        "mixed");
     }
 
     std::vector<double>
@@ -202,31 +172,8 @@ namespace DiskImpact
           auto         f     = [&](const double k) {
             return frequency_equation(n, family, k);
           };
-          std::vector<double> &roots = cached.second;
-          double               k0    = std::max(cached.first, start);
-          double               f0    = f(k0);
-          while (k0 < kappa_max)
-            {
-              const double k1 = k0 + step, f1 = f(k1);
-              if (f0 == 0.)
-                roots.push_back(k0);
-              else if (f0 * f1 < 0.)
-                {
-                  boost::uintmax_t max_iterations = 200;
-                  const auto       bracket = boost::math::tools::toms748_solve(
-                    f,
-                    k0,
-                    k1,
-                    f0,
-                    f1,
-                    boost::math::tools::eps_tolerance<double>(52),
-                    max_iterations);
-                  roots.push_back(0.5 * (bracket.first + bracket.second));
-                }
-              k0 = k1;
-              f0 = f1;
-            }
-          cached.first = k0;
+          cached.first = scan_roots(
+            f, std::max(cached.first, start), kappa_max, step, cached.second);
         }
       std::vector<double> result;
       for (const double k : cached.second)
@@ -284,17 +231,7 @@ namespace DiskImpact
             if (add_family(n, ModeFamily::mixed) == 0 && n >= 2)
               break;
           if (found.size() >= n_modes)
-            {
-              std::stable_sort(found.begin(),
-                               found.end(),
-                               [](const auto &a, const auto &b) {
-                                 return a.first < b.first;
-                               });
-              std::vector<ModeLabel> modes;
-              for (unsigned int i = 0; i < n_modes; ++i)
-                modes.push_back(found[i].second);
-              return modes;
-            }
+            return lowest_labels(found, n_modes);
         }
     }
   } // namespace Reference

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "reference/free_body_modes.h"
+
 #include <map>
 #include <string>
 #include <utility>
@@ -9,31 +11,6 @@ namespace DiskImpact
 {
   namespace Reference
   {
-    /// Kinds of free-disk modes (seed 001, section 2.2).
-    enum class ModeFamily
-    {
-      rigid,     ///< omega = 0: translations and the rotation
-      radial,    ///< n = 0, u_phi = 0 (breathing modes)
-      torsional, ///< n = 0, u_r = 0
-      mixed      ///< n >= 1: radial and tangential motion coupled
-    };
-
-    std::string
-    to_string(ModeFamily family);
-
-    /// (n, l, family): angular order, root index (from 0), family.
-    struct ModeLabel
-    {
-      unsigned int n      = 0;
-      unsigned int l      = 0;
-      ModeFamily   family = ModeFamily::mixed;
-
-      bool
-      operator==(const ModeLabel &other) const;
-      bool
-      operator<(const ModeLabel &other) const;
-    };
-
     /**
      * Analytic eigenfrequencies of a free elastic disk of radius R.
      *
@@ -48,7 +25,7 @@ namespace DiskImpact
      * kappa = omega R / c_L is the seed's dimensionless wave number (eq. 18
      * with R = 1), kappa' = kappa c_L / c_T.
      */
-    class FreeDiskModes
+    class FreeDiskModes : public FreeBodyModes
     {
     public:
       /**
@@ -90,7 +67,7 @@ namespace DiskImpact
       kappa(const ModeLabel &mode) const;
       /// Angular frequency omega = kappa c_L / R of mode (n, l, family).
       double
-      omega(const ModeLabel &mode) const;
+      omega(const ModeLabel &mode) const override;
 
       /// Ratio c_L / c_T = sqrt(2 / (1 - nu2)).
       double
@@ -104,7 +81,7 @@ namespace DiskImpact
        * torsional modes.
        */
       std::vector<ModeLabel>
-      lowest_modes(unsigned int n_modes, bool half_disk) const;
+      lowest_modes(unsigned int n_modes, bool half_disk) const override;
 
     private:
       double nu2;

@@ -42,7 +42,9 @@ namespace DiskImpact
       const std::string &directory = parameters.run.output_directory;
       analysis.write_mode_shapes(modes, directory);
       on_root(communicator, [&]() {
-        ModalAnalysis::write_modes_csv(modes, directory + "/modes.csv");
+        ModalAnalysis::write_modes_csv(modes,
+                                       directory + "/modes.csv",
+                                       parameters.geometry.is_axisymmetric());
       });
     }
 
@@ -57,10 +59,10 @@ namespace DiskImpact
 
     // The analytic modes in their own order, beside the computed labels.
     const auto reference =
-      analytic_disk_modes(parameters.geometry, parameters.material);
+      analytic_free_modes(parameters.geometry, parameters.material);
     const auto analytic =
-      reference.lowest_modes(modes.size() - n_rigid,
-                             parameters.geometry.is_half_disk());
+      reference->lowest_modes(modes.size() - n_rigid,
+                              parameters.geometry.is_half_disk());
     unsigned int n_matching = 0;
     while (n_matching < analytic.size() &&
            modes[n_rigid + n_matching].label == analytic[n_matching])
@@ -71,7 +73,7 @@ namespace DiskImpact
         {
           table.start_row();
           table.add(i);
-          table.add(reference.omega(analytic[i]));
+          table.add(reference->omega(analytic[i]));
           table.add(analytic[i].n);
           table.add(analytic[i].l);
           table.add(to_string(analytic[i].family));

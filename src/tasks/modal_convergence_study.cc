@@ -98,7 +98,7 @@ namespace DiskImpact
     // (with multiplicity) it takes to reach the last of them.
     const bool half = parameters.geometry.is_half_disk();
     const auto reference =
-      analytic_disk_modes(parameters.geometry, parameters.material);
+      analytic_free_modes(parameters.geometry, parameters.material);
     std::vector<Reference::ModeLabel> targets;
     unsigned int                      n_elastic_needed = 0;
     for (unsigned int count = n_modes_compared;
@@ -106,7 +106,7 @@ namespace DiskImpact
          count *= 2)
       {
         targets.clear();
-        const auto lowest = reference.lowest_modes(count, half);
+        const auto lowest = reference->lowest_modes(count, half);
         for (unsigned int i = 0; i < lowest.size(); ++i)
           if (targets.size() < n_modes_compared &&
               std::find(targets.begin(), targets.end(), lowest[i]) ==
@@ -136,7 +136,7 @@ namespace DiskImpact
         double                             previous_h = 0.;
         for (const unsigned int level : refinement_levels)
           {
-            DiskGeometry geometry = parameters.geometry;
+            BodyGeometry geometry = parameters.geometry;
             geometry.set_global_refinements(level);
             ModalAnalysis analysis(geometry,
                                    parameters.material,
@@ -176,7 +176,7 @@ namespace DiskImpact
                   {
                     // No computed mode carries this label on this mesh.
                     table.add_empty();
-                    table.add(reference.omega(targets[t]));
+                    table.add(reference->omega(targets[t]));
                     table.add_empty();
                   }
                 if (error && previous_error[t] && *error != 0.)

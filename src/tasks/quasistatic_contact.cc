@@ -9,7 +9,7 @@
 #include "output/atomic_file.h"
 #include "output/csv_table.h"
 #include "output/state_output.h"
-#include "reference/log_contact_law.h"
+#include "reference/wall_contact_theory.h"
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/data_out_base.h>
@@ -36,18 +36,6 @@ namespace DiskImpact
 {
   using namespace dealii;
 
-  double
-  ContactLawPoint::constant_com() const
-  {
-    return Reference::LogContactLaw::constant_from(load, delta_com);
-  }
-
-  double
-  ContactLawPoint::constant_diameter() const
-  {
-    return Reference::LogContactLaw::constant_from(load, delta_diameter);
-  }
-
   namespace
   {
     /// The problem at one load: mesh, operators, Newton, results.
@@ -69,6 +57,9 @@ namespace DiskImpact
       results() const;
       std::vector<std::pair<double, double>>
       pressure_profile() const;
+      /// P / R (disk) or P / R^2 (sphere).
+      double
+      pressure_unit() const;
       /// The deformed state with stresses; returns the .pvtu's name.
       std::string
       write_state(const std::string &directory, unsigned int index) const;
@@ -80,9 +71,12 @@ namespace DiskImpact
                PETScWrappers::MPI::Vector       &r,
                bool                              with_tangent);
 
-      const Parameters                       &parameters;
-      const double                            load;
+      const Parameters                                   &parameters;
+      const double                                        load;
+      const std::unique_ptr<Reference::WallContactTheory> theory;
+      /// P, and the part of it the computed domain carries.
       const double                            total_force;
+      const double                            domain_force;
       MPI_Comm                                communicator;
       parallel::distributed::Triangulation<2> triangulation;
       ElasticityOperator                      op;
@@ -98,9 +92,13 @@ namespace DiskImpact
                                    MPI_Comm          communicator)
         : parameters(parameters)
         , load(load)
-        , total_force(load * M_PI *
-                      parameters.material.in_plane_young_modulus() *
-                      parameters.geometry.radius())
+        , theory(Reference::wall_contact_theory(
+            parameters.geometry.is_axisymmetric()))
+        , total_force(
+            load *
+            theory->force_unit(parameters.material.in_plane_young_modulus(),
+                               parameters.geometry.radius()))
+        , domain_force(parameters.geometry.domain_share() * total_force)
         , communicator(communicator)
         , triangulation(communicator,
                         Triangulation<2>::limit_level_difference_at_vertices)
@@ -122,12 +120,12 @@ namespace DiskImpact
           parameters.material.in_plane_young_modulus(), h_contact),
         geometry.center());
 
-      // Uniform body force toward the wall, P in total on the whole disk:
-      // P / 2 on the half disk, divided by the discrete area so that the
-      // force applied is exactly P / 2.
-      const double area = GridTools::volume(triangulation, op.get_mapping());
-      body_force        = op.create_vector();
-      op.assemble_body_force(-0.5 * total_force / area * wall.normal,
+      // Uniform body force toward the wall, P in total on the whole body:
+      // P / 2 on the half disk, P on a sphere's meridian (whose integrals
+      // are over the sphere), divided by the discrete area or volume so
+      // that the force applied is exactly that.
+      body_force = op.create_vector();
+      op.assemble_body_force(-domain_force / op.volume() * wall.normal,
                              body_force);
       solution = op.create_vector();
     }
@@ -242,11 +240,10 @@ namespace DiskImpact
         op.vertex_displacement(u, geometry.center() - R * wall.normal);
       const Tensor<1, 2> u_far =
         op.vertex_displacement(u, geometry.center() + R * wall.normal);
-      point.delta_diameter = ((u_contact - u_far) * wall.normal) / R;
-      point.half_width     = state.half_width() / R;
-      point.penetration    = state.max_penetration / R;
-      // The half disk carries half the load.
-      point.force_balance     = 2. * state.force / total_force - 1.;
+      point.delta_diameter    = ((u_contact - u_far) * wall.normal) / R;
+      point.half_width        = state.half_width() / R;
+      point.penetration       = state.max_penetration / R;
+      point.force_balance     = state.force / domain_force - 1.;
       point.h_contact         = h_contact / R;
       point.n_dofs            = op.get_dof_handler().n_dofs();
       point.newton_iterations = iterations;
@@ -257,6 +254,12 @@ namespace DiskImpact
     ContactProblem::pressure_profile() const
     {
       return contact->pressure_profile(op.create_ghosted(solution));
+    }
+
+    double
+    ContactProblem::pressure_unit() const
+    {
+      return theory->pressure_unit(total_force, parameters.geometry.radius());
     }
 
     std::string
@@ -279,15 +282,18 @@ namespace DiskImpact
     prm.declare_entry("Loads",
                       "1e-5, 1e-4, 1e-3",
                       Patterns::List(Patterns::Double(), 1),
-                      "Loads P / (pi E2 R) [-], each > 0 and <= 0.05; P is "
-                      "the total body force on the (full) disk per unit "
-                      "thickness.");
+                      "Loads [-], each > 0 and <= 0.05: P / (pi E2 R) for a "
+                      "disk, P the total body force on the (full) disk per "
+                      "unit thickness; P / (pi E* R^2) for a sphere, P the "
+                      "total force (E* = E / (1 - nu^2)).");
     prm.declare_entry("Elements across contact",
                       "16",
                       Patterns::Integer(10, 1000),
                       "Number of elements across the Hertz half-width "
-                      "a = 2 R sqrt(P / (pi E2 R)): cells closer than 1.5 a "
-                      "to the contact point get size <= a / this number.");
+                      "a = 2 R sqrt(P / (pi E2 R)) (disk) or contact radius "
+                      "a = (3 P R / (4 E*))^(1/3) (sphere): cells closer "
+                      "than 1.5 a to the contact point get size <= a / this "
+                      "number.");
     prm.declare_entry("Grading",
                       "0.3",
                       Patterns::Double(0.01, 1),
@@ -337,9 +343,11 @@ namespace DiskImpact
   {
     const auto &geometry = parameters.geometry;
     geometry.create_triangulation(triangulation, max_cells);
+    const auto theory =
+      Reference::wall_contact_theory(geometry.is_axisymmetric());
     refine_toward_contact(triangulation,
                           geometry.contact_point(),
-                          Reference::hertz_half_width(load) * geometry.radius(),
+                          theory->half_width(load) * geometry.radius(),
                           elements_across_contact,
                           grading,
                           max_cells);
@@ -354,14 +362,17 @@ namespace DiskImpact
                                0);
     const std::string &directory = parameters.run.output_directory;
     const double       nu2       = parameters.material.in_plane_poisson_ratio();
+    const auto         theory =
+      Reference::wall_contact_theory(parameters.geometry.is_axisymmetric());
+    const std::string symbol = theory->constant_symbol();
 
     CsvTable law({"load",
                   "delta_com",
                   "delta_diameter",
                   "half_width",
                   "penetration",
-                  "C_com",
-                  "C_diameter",
+                  symbol + "_com",
+                  symbol + "_diameter",
                   "newton_iterations",
                   "hertz_half_width",
                   "force_balance_error",
@@ -372,25 +383,30 @@ namespace DiskImpact
     CsvTable profile({"load", "y", "pressure", "pressure_hertz"});
     std::vector<std::pair<double, std::string>> records;
 
-    pcout << "     load        C_com    C_diameter   a/a_Hertz-1   "
-             "force bal.   penetration  Newton   DoFs\n";
+    pcout << "     load        " << symbol << "_com    " << symbol
+          << "_diameter   a/a_Hertz-1   force bal.   penetration  Newton   "
+             "DoFs\n";
     for (unsigned int i = 0; i < loads.size(); ++i)
       {
         ContactProblem problem(parameters, loads[i], communicator);
         // Start from the rigid translation whose overlap with the wall is
-        // as wide as the Hertz contact: depth a^2 / (2 R) = 2 x R.
-        problem.solve(2. * loads[i], newton_tolerance, max_newton_iterations);
-        const ContactLawPoint p = problem.results();
-
-        const double a_hertz = Reference::hertz_half_width(p.load);
+        // as wide as the Hertz contact: depth a^2 / (2 R).
+        const double a_hertz = theory->half_width(loads[i]);
+        problem.solve(0.5 * a_hertz * a_hertz,
+                      newton_tolerance,
+                      max_newton_iterations);
+        const ContactLawPoint p   = problem.results();
+        const double constant_com = theory->constant_from(p.load, p.delta_com);
+        const double constant_diameter =
+          theory->constant_from(p.load, p.delta_diameter);
         law.start_row();
         for (const double v : {p.load,
                                p.delta_com,
                                p.delta_diameter,
                                p.half_width,
                                p.penetration,
-                               p.constant_com(),
-                               p.constant_diameter()})
+                               constant_com,
+                               constant_diameter})
           law.add(v);
         law.add(p.newton_iterations);
         for (const double v : {a_hertz,
@@ -401,35 +417,36 @@ namespace DiskImpact
         law.add(p.n_dofs);
         law.add(nu2);
 
-        // Pressure in units of P / R against Hertz (seed 001, eq. 46).
+        // Pressure in units of P / R (disk) or P / R^2 (sphere) against
+        // Hertz (seed 001, eq. 46).
         const double R = parameters.geometry.radius();
-        const double P =
-          p.load * M_PI * parameters.material.in_plane_young_modulus() * R;
         for (const auto &[y, pressure] : problem.pressure_profile())
           {
             const double t = y / R;
             profile.start_row();
             profile.add(p.load);
             profile.add(t);
-            profile.add(pressure * R / P);
-            profile.add(std::abs(t) < a_hertz ?
-                          2. / (M_PI * a_hertz * a_hertz) *
-                            std::sqrt(a_hertz * a_hertz - t * t) :
-                          0.);
+            profile.add(pressure / problem.pressure_unit());
+            profile.add(theory->pressure(t, p.load));
           }
         records.emplace_back(p.load, problem.write_state(directory, i));
 
         std::ostringstream line;
         line << std::scientific << std::setprecision(3) << std::setw(10)
              << p.load << std::fixed << std::setprecision(6) << std::setw(12)
-             << p.constant_com() << std::setw(12) << p.constant_diameter()
+             << constant_com << std::setw(12) << constant_diameter
              << std::scientific << std::setprecision(2) << std::setw(14)
              << p.half_width / a_hertz - 1. << std::setw(13) << p.force_balance
              << std::setw(13) << p.penetration << std::setw(7)
              << p.newton_iterations << std::setw(9) << p.n_dofs << '\n';
         pcout << line.str() << std::flush;
       }
-    pcout << "Seed 001, eq. 57: C = -1 - nu2 = " << -1. - nu2 << std::endl;
+    if (parameters.geometry.is_axisymmetric())
+      pcout << "Sphere: D = (delta - delta_Hertz) E* R / P, delta_Hertz = "
+               "(9 P^2 / (16 R E*^2))^(1/3)"
+            << std::endl;
+    else
+      pcout << "Seed 001, eq. 57: C = -1 - nu2 = " << -1. - nu2 << std::endl;
     on_root(communicator, [&]() {
       law.write(directory + "/contact_law.csv");
       profile.write(directory + "/pressure_profile.csv");

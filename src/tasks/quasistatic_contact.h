@@ -16,7 +16,8 @@ namespace DiskImpact
   /// One converged quasistatic contact state, lengths in units of R.
   struct ContactLawPoint
   {
-    double       load              = 0.; ///< P / (pi E2 R)
+    /// P / (pi E2 R) (disk), P / (pi E* R^2) (sphere)
+    double       load              = 0.;
     double       delta_com         = 0.; ///< approach of the centre of mass
     double       delta_diameter    = 0.; ///< shortening of the axial diameter
     double       half_width        = 0.; ///< a / R from the pressure moments
@@ -25,22 +26,17 @@ namespace DiskImpact
     double       h_contact         = 0.; ///< smallest edge face / R
     unsigned int n_dofs            = 0;
     unsigned int newton_iterations = 0;
-
-    double
-    constant_com() const;
-    double
-    constant_diameter() const;
   };
 
   /**
    * Task 'quasistatic contact': a half disk (symmetric about the impact
-   * axis) pressed on the wall by a uniform body force of total P (seed 001,
-   * section 5: the quasistatic picture of the disk being decelerated), for a
-   * list of loads. Per load: a mesh graded toward the contact point so the
-   * elements across the whole Hertz half-width are small, then Newton's
-   * method with a backtracking line search on the penalty contact problem.
-   * Writes contact_law.csv, pressure_profile.csv and the deformed states
-   * (contact.pvd).
+   * axis) or a sphere pressed on the wall by a uniform body force of total
+   * P (seed 001, section 5: the quasistatic picture of the body being
+   * decelerated), for a list of loads, against Reference::WallContactTheory.
+   * Per load: a mesh graded toward the contact point so the elements across the
+   * whole Hertz half-width are small, then Newton's method with a backtracking
+   * line search on the penalty contact problem. Writes contact_law.csv,
+   * pressure_profile.csv and the deformed states (contact.pvd).
    */
   class QuasistaticContact
   {

@@ -3,6 +3,7 @@
 
 usage: check_modes.py OUTPUT_DIR [--rigid N] [--orientations 1|2]
                       [--max-error E] [--first K] [--analytic-order]
+                      [--z-parity]
 """
 import argparse
 import csv
@@ -26,6 +27,9 @@ def main():
                    help="apply --max-error to the first K elastic modes only")
     p.add_argument("--analytic-order", action="store_true",
                    help="labels must follow analytic_modes.csv")
+    p.add_argument("--z-parity", action="store_true",
+                   help="sphere: the measured z_parity of each elastic mode "
+                   "must be (-1)^n")
     a = p.parse_args()
 
     modes = read(a.output_dir + "/modes.csv")
@@ -61,6 +65,13 @@ def main():
             if label(m) != label(ref):
                 failures.append(f"elastic mode {i}: label {label(m)}, "
                                 f"analytic ordering has {label(ref)}")
+
+    if a.z_parity:
+        for i, m in enumerate(elastic):
+            want = "even" if int(m["n"]) % 2 == 0 else "odd"
+            if m.get("z_parity") != want:
+                failures.append(f"elastic mode {i} {label(m)}: z_parity "
+                                f"{m.get('z_parity')}, expected {want}")
 
     for f in failures:
         print("FAIL:", f)

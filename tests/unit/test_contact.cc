@@ -141,12 +141,12 @@ TEST_CASE("contact tangent is the derivative of the contact residual",
           "[contact][fe]")
 {
   dealii::ParameterHandler prm;
-  DiskGeometry::declare_parameters(prm);
+  BodyGeometry::declare_parameters(prm);
   prm.enter_subsection("Geometry");
   prm.set("Domain", "half disk");
   prm.set("Global refinements", "3");
   prm.leave_subsection();
-  DiskGeometry geometry;
+  BodyGeometry geometry;
   geometry.parse_parameters(prm);
 
   dealii::parallel::distributed::Triangulation<2> triangulation(MPI_COMM_WORLD);

@@ -25,13 +25,13 @@ TEST_CASE("condensed solver solves A u = b + E_C P(u_C), P nonlinear",
           "[impact][fe]")
 {
   dealii::ParameterHandler prm;
-  DiskGeometry::declare_parameters(prm);
+  BodyGeometry::declare_parameters(prm);
   prm.enter_subsection("Geometry");
   prm.set("Domain", "half disk");
   prm.set("Global refinements", "2");
   prm.set("Contact refinements", "2");
   prm.leave_subsection();
-  DiskGeometry geometry;
+  BodyGeometry geometry;
   geometry.parse_parameters(prm);
   dealii::parallel::distributed::Triangulation<2> triangulation(
     MPI_COMM_WORLD,

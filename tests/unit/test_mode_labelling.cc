@@ -93,12 +93,12 @@ TEST_CASE("boundary harmonics of interpolated fields", "[labelling][fe]")
   for (const bool half : {false, true})
     {
       dealii::ParameterHandler prm;
-      DiskGeometry::declare_parameters(prm);
+      BodyGeometry::declare_parameters(prm);
       prm.enter_subsection("Geometry");
       prm.set("Domain", half ? "half disk" : "full disk");
       prm.set("Global refinements", "2");
       prm.leave_subsection();
-      DiskGeometry geometry;
+      BodyGeometry geometry;
       geometry.parse_parameters(prm);
 
       dealii::parallel::distributed::Triangulation<2> triangulation(

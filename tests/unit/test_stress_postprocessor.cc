@@ -286,3 +286,39 @@ TEST_CASE("stress postprocessor: field names and kinds",
   const StressPostprocessor tensor_out(material(PlaneModel::plane_stress));
   CHECK(tensor_out.get_names() == std::vector<std::string>(4, "stress"));
 }
+
+TEST_CASE("sphere: hoop stress of a uniform expansion, on and off the axis",
+          "[stress][axisymmetric]")
+{
+  // u = e (x - c) on the meridian is the 3D expansion eps = e 1: sigma =
+  // 3 K e 1 with the bulk modulus K = E / (3 (1 - 2 nu)), the hoop stress
+  // included; on the axis (r = 0) the hoop strain is the limit du_r/dr.
+  const double E = 2., nu = 0.3, e = 1e-3, K = E / (3. * (1. - 2. * nu));
+  Material     sphere;
+  sphere.set(PlaneModel::axisymmetric, E, nu, 1.);
+  const StressPostprocessor        tensor(sphere);
+  const StressScalarsPostprocessor scalars(sphere);
+  const dealii::Point<2>           centre(1., 0.);
+  for (const dealii::Point<2> x :
+       {dealii::Point<2>(0.3, 0.4), dealii::Point<2>(1.7, 0.)})
+    {
+      CAPTURE(x);
+      dealii::DataPostprocessorInputs::Vector<2> inputs;
+      inputs.evaluation_points  = {x};
+      inputs.solution_values    = {dealii::Vector<double>(2)};
+      inputs.solution_values[0] = dealii::Vector<double>(
+        {e * (x[0] - centre[0]), e * (x[1] - centre[1])});
+      const Tensor<2, 2> g      = gradient(e, 0., 0., e);
+      inputs.solution_gradients = {{g[0], g[1]}};
+
+      std::vector<dealii::Vector<double>> sigma(1, dealii::Vector<double>(4)),
+        measures(1, dealii::Vector<double>(4));
+      tensor.evaluate_vector_field(inputs, sigma);
+      scalars.evaluate_vector_field(inputs, measures);
+      CHECK(sigma[0][0] == Approx(3. * K * e).epsilon(1e-14));
+      CHECK(sigma[0][3] == Approx(3. * K * e).epsilon(1e-14));
+      CHECK(sigma[0][1] == Approx(0.).margin(1e-18));
+      CHECK(measures[0][0] == Approx(0.).margin(1e-15));           // von Mises
+      CHECK(measures[0][3] == Approx(-3. * K * e).epsilon(1e-14)); // pressure
+    }
+}
