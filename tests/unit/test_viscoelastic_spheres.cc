@@ -1,3 +1,4 @@
+#include "reference/hertz_impact.h"
 #include "reference/viscoelastic_spheres.h"
 
 #include <boost/math/quadrature/tanh_sinh.hpp>
@@ -329,5 +330,31 @@ TEST_CASE("Spheres: Pade eq. 35 against the ODE on u = 1e-3 ... 1e2",
       CHECK(pade < previous);
       CHECK(pade > 0.);
       previous = pade;
+    }
+}
+
+TEST_CASE("Hertz sphere impact in closed form against the integrated ODE",
+          "[reference][sphere]")
+{
+  // Independent reference: collide() integrates m xi'' = -rho xi^{3/2}
+  // (Dormand-Prince, tolerance 1e-13) and locates the end of contact.
+  const double m = 2.5, E_star = 1.7, R = 0.8;
+  const double rho = DiskImpact::Reference::hertz_sphere_stiffness(E_star, R);
+  CHECK(rho == Approx(4. / 3. * E_star * std::sqrt(R)).epsilon(1e-15));
+  for (const double v : {1e-4, 1e-2, 0.3})
+    {
+      CAPTURE(v);
+      const auto closed =
+        DiskImpact::Reference::hertz_sphere_impact(m, E_star, R, v);
+      const auto integrated =
+        collide(m, v, hertz_force_law(rho), 0., EndCriterion::force, 1e-13);
+      CHECK(closed.max_overlap == Approx(integrated.max_overlap).epsilon(1e-9));
+      CHECK(closed.contact_time ==
+            Approx(integrated.contact_time).epsilon(1e-9));
+      CHECK(closed.max_force ==
+            Approx(rho * std::pow(integrated.max_overlap, 1.5)).epsilon(1e-9));
+      // The classical constant: t_c = 2.94328 delta_max / v.
+      CHECK(closed.contact_time * v / closed.max_overlap ==
+            Approx(2.94328).epsilon(1e-5));
     }
 }
