@@ -18,51 +18,51 @@ namespace DiskImpact
           strain[i][j] = 0.5 * (gradient[i][j] + gradient[j][i]);
       return strain;
     }
-
-    bool
-    is_axisymmetric(const Material &material)
-    {
-      return material.plane_model() == PlaneModel::axisymmetric;
-    }
-
-    UpdateFlags
-    needed_flags(const Material &material)
-    {
-      return is_axisymmetric(material) ?
-               update_values | update_gradients | update_quadrature_points :
-               update_gradients;
-    }
-
-    /// The stress at output point @p q (the out-of-plane part planar:
-    /// @p out_of_plane_ratio times the in-plane trace).
-    SectionStress
-    section_stress(const Material                           &material,
-                   const DataPostprocessorInputs::Vector<2> &inputs,
-                   const unsigned int                        q,
-                   const double out_of_plane_ratio = 0.)
-    {
-      const SymmetricTensor<2, 2> strain =
-        strain_from_gradient(inputs.solution_gradients[q]);
-      SectionStress stress;
-      stress.in_plane = material.stiffness_tensor() * strain;
-      if (!is_axisymmetric(material))
-        {
-          stress.out_of_plane = out_of_plane_ratio * trace(stress.in_plane);
-          return stress;
-        }
-      // eps_theta = u_r / r, and du_r/dr where r = 0 (u_r = 0 there).
-      const double r = inputs.evaluation_points[q][1];
-      const double hoop =
-        std::abs(r) > 1e-12 * inputs.evaluation_points[q].norm() ?
-          inputs.solution_values[q][1] / r :
-          inputs.solution_gradients[q][1][1];
-      const double lambda = material.lame_lambda();
-      stress.in_plane += lambda * hoop * unit_symmetric_tensor<2>();
-      stress.out_of_plane =
-        lambda * (trace(strain) + hoop) + 2. * material.shear_modulus() * hoop;
-      return stress;
-    }
   } // namespace
+
+  SectionStressModel::SectionStressModel(const Material &material)
+      : stiffness(material.stiffness_tensor())
+      , axisymmetric(material.plane_model() == PlaneModel::axisymmetric)
+      , lambda(material.lame_lambda())
+      , mu(material.shear_modulus())
+      , out_of_plane_ratio(material.plane_model() == PlaneModel::plane_strain ?
+                             material.in_plane_poisson_ratio() /
+                               (1. + material.in_plane_poisson_ratio()) :
+                             0.)
+  {
+  }
+
+  SectionStress
+  SectionStressModel::evaluate(const DataPostprocessorInputs::Vector<2> &inputs,
+                               const unsigned int q) const
+  {
+    const SymmetricTensor<2, 2> strain =
+      strain_from_gradient(inputs.solution_gradients[q]);
+    SectionStress stress;
+    stress.in_plane = stiffness * strain;
+    if (!axisymmetric)
+      {
+        stress.out_of_plane = out_of_plane_ratio * trace(stress.in_plane);
+        return stress;
+      }
+    // eps_theta = u_r / r, and du_r/dr where r = 0 (u_r = 0 there).
+    const double r = inputs.evaluation_points[q][1];
+    const double hoop =
+      std::abs(r) > 1e-12 * inputs.evaluation_points[q].norm() ?
+        inputs.solution_values[q][1] / r :
+        inputs.solution_gradients[q][1][1];
+    stress.in_plane += lambda * hoop * unit_symmetric_tensor<2>();
+    stress.out_of_plane = lambda * (trace(strain) + hoop) + 2. * mu * hoop;
+    return stress;
+  }
+
+  UpdateFlags
+  SectionStressModel::needed_update_flags() const
+  {
+    return axisymmetric ?
+             update_values | update_gradients | update_quadrature_points :
+             update_gradients;
+  }
 
   SymmetricTensor<2, 3>
   SectionStress::three_dimensional() const
@@ -76,8 +76,10 @@ namespace DiskImpact
   }
 
   StressPostprocessor::StressPostprocessor(const Material &material)
-      : DataPostprocessorTensor<2>("stress", needed_flags(material))
-      , material(material)
+      : DataPostprocessorTensor<2>(
+          "stress",
+          SectionStressModel(material).needed_update_flags())
+      , model(material)
   {
   }
 
@@ -88,8 +90,7 @@ namespace DiskImpact
   {
     for (unsigned int q = 0; q < inputs.solution_gradients.size(); ++q)
       {
-        const SymmetricTensor<2, 2> stress =
-          section_stress(material, inputs, q).in_plane;
+        const SymmetricTensor<2, 2> stress = model.evaluate(inputs, q).in_plane;
         for (unsigned int i = 0; i < 2; ++i)
           for (unsigned int j = 0; j < 2; ++j)
             computed_quantities[q][Tensor<2, 2>::component_to_unrolled_index(
@@ -99,11 +100,7 @@ namespace DiskImpact
 
   StressScalarsPostprocessor::StressScalarsPostprocessor(
     const Material &material)
-      : material(material)
-      , out_of_plane_ratio(material.plane_model() == PlaneModel::plane_strain ?
-                             material.in_plane_poisson_ratio() /
-                               (1. + material.in_plane_poisson_ratio()) :
-                             0.)
+      : model(material)
   {
   }
 
@@ -114,10 +111,9 @@ namespace DiskImpact
   {
     for (unsigned int q = 0; q < inputs.solution_gradients.size(); ++q)
       {
-        const SectionStress section =
-          section_stress(material, inputs, q, out_of_plane_ratio);
-        const SymmetricTensor<2, 2> &stress = section.in_plane;
-        const SymmetricTensor<2, 3>  full   = section.three_dimensional();
+        const SectionStress          section = model.evaluate(inputs, q);
+        const SymmetricTensor<2, 2> &stress  = section.in_plane;
+        const SymmetricTensor<2, 3>  full    = section.three_dimensional();
         // Mohr's circle: centre and radius. deal.II's eigenvalues() goes
         // through tr^2 - 4 det, which loses half the digits of sigma_1 -
         // sigma_2 when the two are close (its documented warning).
@@ -151,6 +147,6 @@ namespace DiskImpact
   UpdateFlags
   StressScalarsPostprocessor::get_needed_update_flags() const
   {
-    return needed_flags(material);
+    return model.needed_update_flags();
   }
 } // namespace DiskImpact

@@ -26,6 +26,33 @@ namespace DiskImpact
     three_dimensional() const;
   };
 
+  /// The material's constants the stress output needs, set once: C, and
+  /// the out-of-plane law (plane strain sigma_zz = nu tr sigma, plane
+  /// stress 0, or the sphere's hoop stress).
+  class SectionStressModel
+  {
+  public:
+    explicit SectionStressModel(const Material &material);
+
+    /// The stress at output point @p q of @p inputs.
+    SectionStress
+    evaluate(const dealii::DataPostprocessorInputs::Vector<2> &inputs,
+             unsigned int                                      q) const;
+
+    /// Gradients; on a sphere also values and points (the hoop strain).
+    dealii::UpdateFlags
+    needed_update_flags() const;
+
+  private:
+    dealii::SymmetricTensor<4, 2> stiffness;
+    bool                          axisymmetric;
+    double                        lambda;
+    double                        mu;
+    /// sigma_zz / (sigma_xx + sigma_yy) of a disk: 0 (plane stress) or nu
+    /// (plane strain).
+    double out_of_plane_ratio;
+  };
+
   /// The Cauchy stress sigma = C : eps(u) of a displacement field, as a
   /// tensor field "stress" for ParaView (the meridian's components on a
   /// sphere).
@@ -40,7 +67,7 @@ namespace DiskImpact
       std::vector<dealii::Vector<double>> &computed_quantities) const override;
 
   private:
-    Material material;
+    SectionStressModel model;
   };
 
   /**
@@ -82,8 +109,6 @@ namespace DiskImpact
     get_needed_update_flags() const override;
 
   private:
-    Material material;
-    /// sigma_zz / (sigma_xx + sigma_yy): 0 (plane stress) or nu (plane strain).
-    double out_of_plane_ratio;
+    SectionStressModel model;
   };
 } // namespace DiskImpact

@@ -19,8 +19,6 @@
 
 #include <deal.II/distributed/tria.h>
 
-#include <deal.II/grid/grid_tools.h>
-
 #include <deal.II/lac/petsc_solver.h>
 
 #include <deal.II/numerics/vector_tools.h>
