@@ -59,13 +59,16 @@ namespace DiskImpact
     reference_models.parse_parameters(prm);
     modal_expansion.parse_parameters(prm);
 
-    // The sphere so far has its modal analysis and quasistatic contact;
-    // the dynamic tasks need its impact outputs and reference models first.
-    require(!geometry.is_axisymmetric() || run.task == Task::modal_analysis ||
-              run.task == Task::modal_convergence ||
-              run.task == Task::quasistatic_contact,
-            "Geometry: 'Body = sphere' is available for the tasks 'modal "
-            "analysis', 'modal convergence' and 'quasistatic contact' only");
+    require(geometry.is_axisymmetric() || impact.revolved_view() == 0.,
+            "Impact: 'Revolved view' is a sphere's 3D view; a disk's "
+            "ParaView output is impact.pvd (set 'Revolved view = 0')");
+    // The disk's reduced models (seeds 000-002) have no sphere version.
+    require(!geometry.is_axisymmetric() ||
+              (run.task != Task::reference_models &&
+               run.task != Task::modal_expansion_impact),
+            "Geometry: 'Body = sphere' is not available for the disk's "
+            "reduced models (tasks 'reference models' and 'modal "
+            "expansion')");
 
     // Checks across subsections. The scales of the run must be ordinary
     // floating-point numbers, or lengths, masses and energies over- or
@@ -100,7 +103,7 @@ namespace DiskImpact
       }
     if (run.task == Task::reference_models)
       reference_models.check_velocities(
-        impact.contact_law_constant_value(material.in_plane_poisson_ratio()));
+        impact.contact_law_constant_value(*this));
     if (run.task == Task::impact || run.task == Task::impact_convergence ||
         run.task == Task::sweep)
       contact.check_wall(geometry, 0.05);

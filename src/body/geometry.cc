@@ -166,6 +166,14 @@ namespace DiskImpact
     return half_disk && body_kind == Body::disk ? 0.5 : 1.;
   }
 
+  double
+  BodyGeometry::volume() const
+  {
+    return body_kind == Body::sphere ?
+             4. / 3. * M_PI * std::pow(disk_radius, 3) :
+             M_PI * disk_radius * disk_radius;
+  }
+
   Point<2>
   BodyGeometry::center() const
   {

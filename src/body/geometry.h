@@ -108,6 +108,10 @@ namespace DiskImpact
     /// integrals are over the whole sphere).
     double
     domain_share() const;
+    /// The body's volume: pi R^2 for a disk (per unit thickness), 4 pi R^3
+    /// / 3 for a sphere.
+    double
+    volume() const;
     dealii::Point<2>
     center() const;
     dealii::Point<2>

@@ -46,8 +46,10 @@ namespace DiskImpact
     prm.declare_entry("Newton tolerance",
                       "1e-13",
                       Patterns::Double(1e-16, 1e-3),
-                      "Newton stops when |residual| <= this times the "
-                      "inertial force 2 |M v0| / dt [-].");
+                      "Newton stops when the residual of the contact DoFs' "
+                      "displacements, |u_C - y_C - S P(u_C)|_inf, is at most "
+                      "this times the largest approach the 1-DOF model "
+                      "expects [-].");
     prm.declare_entry("Maximum Newton iterations",
                       "30",
                       Patterns::Integer(1, 1000),

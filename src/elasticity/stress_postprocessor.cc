@@ -64,6 +64,12 @@ namespace DiskImpact
              update_gradients;
   }
 
+  bool
+  SectionStressModel::is_axisymmetric() const
+  {
+    return axisymmetric;
+  }
+
   SymmetricTensor<2, 3>
   SectionStress::three_dimensional() const
   {
@@ -124,16 +130,21 @@ namespace DiskImpact
         computed_quantities[q][1] = centre + radius;
         computed_quantities[q][2] = centre - radius;
         computed_quantities[q][3] = -trace(full) / 3.;
+        if (model.is_axisymmetric())
+          computed_quantities[q][4] = section.out_of_plane;
       }
   }
 
   std::vector<std::string>
   StressScalarsPostprocessor::get_names() const
   {
-    return {"von_mises",
-            "principal_stress_1",
-            "principal_stress_2",
-            "pressure"};
+    std::vector<std::string> names = {"von_mises",
+                                      "principal_stress_1",
+                                      "principal_stress_2",
+                                      "pressure"};
+    if (model.is_axisymmetric())
+      names.emplace_back("hoop_stress");
+    return names;
   }
 
   std::vector<DataComponentInterpretation::DataComponentInterpretation>
@@ -141,7 +152,7 @@ namespace DiskImpact
   {
     return std::vector<
       DataComponentInterpretation::DataComponentInterpretation>(
-      4, DataComponentInterpretation::component_is_scalar);
+      get_names().size(), DataComponentInterpretation::component_is_scalar);
   }
 
   UpdateFlags

@@ -43,6 +43,10 @@ namespace DiskImpact
     dealii::UpdateFlags
     needed_update_flags() const;
 
+    /// Whether the out-of-plane stress is a sphere's hoop stress.
+    bool
+    is_axisymmetric() const;
+
   private:
     dealii::SymmetricTensor<4, 2> stiffness;
     bool                          axisymmetric;
@@ -86,7 +90,7 @@ namespace DiskImpact
    * sqrt(((sigma_xx - sigma_yy) / 2)^2 + sigma_xy^2); sigma_zz is the third.
    * Like "stress", the elastic stress C : eps (no Kelvin-Voigt viscous
    * part). On a sphere the third principal stress is the hoop stress
-   * (SectionStress).
+   * (SectionStress), written as a fifth field "hoop_stress".
    */
   class StressScalarsPostprocessor : public dealii::DataPostprocessor<2>
   {

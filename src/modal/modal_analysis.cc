@@ -115,9 +115,7 @@ namespace DiskImpact
                                     harmonics,
                                     1e-6 * scale,
                                     geometry.is_half_disk(),
-                                    geometry.is_axisymmetric() ?
-                                      Reference::ModeFamily::spheroidal :
-                                      Reference::ModeFamily::mixed);
+                                    coupled_family(geometry));
 
     const auto              reference = analytic_free_modes(geometry, material);
     std::vector<ModeResult> modes;

@@ -28,7 +28,8 @@ namespace DiskImpact
     labels = label_modes(basis.eigenvalues,
                          harmonics,
                          1e-6 * eigenvalue_scale,
-                         geometry.is_half_disk());
+                         geometry.is_half_disk(),
+                         coupled_family(geometry));
     while (first_elastic < labels.size() &&
            labels[first_elastic].label.family == Reference::ModeFamily::rigid)
       ++first_elastic;

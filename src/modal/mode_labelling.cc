@@ -234,4 +234,10 @@ namespace DiskImpact
       }
     return labelled;
   }
+  Reference::ModeFamily
+  coupled_family(const BodyGeometry &geometry)
+  {
+    return geometry.is_axisymmetric() ? Reference::ModeFamily::spheroidal :
+                                        Reference::ModeFamily::mixed;
+  }
 } // namespace DiskImpact

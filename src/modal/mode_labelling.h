@@ -62,6 +62,11 @@ namespace DiskImpact
    * counting the modes of the same (n, family) met so far, each n >= 1
    * counted once per orientation (twice on the full disk).
    */
+  /// The family of the modes that couple both components: mixed on a disk,
+  /// spheroidal on a sphere.
+  Reference::ModeFamily
+  coupled_family(const BodyGeometry &geometry);
+
   std::vector<LabelledMode>
   label_modes(
     const std::vector<double>          &eigenvalues,

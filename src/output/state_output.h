@@ -1,5 +1,7 @@
 #pragma once
 
+#include <deal.II/base/point.h>
+
 #include <deal.II/lac/petsc_vector.h>
 
 #include <string>
@@ -20,6 +22,24 @@ namespace DiskImpact
   write_deformed_state(const ElasticityOperator                 &op,
                        const Material                           &material,
                        const dealii::PETScWrappers::MPI::Vector &ghosted_u,
+                       const std::string                        &directory,
+                       const std::string                        &basename,
+                       unsigned int                              index);
+
+  /**
+   * The same fields of a sphere (Material axisymmetric) as a 3D view: the
+   * meridian revolved about its axis through @p angle_degrees
+   * (RevolvedView), about one sector per 10 degrees; the sphere's centre
+   * @p centre and radius @p radius find its surface. Written as
+   * DIRECTORY/BASENAME_NNN.pvtu; returns its name relative to @p directory.
+   */
+  std::string
+  write_revolved_state(const ElasticityOperator                 &op,
+                       const Material                           &material,
+                       const dealii::PETScWrappers::MPI::Vector &ghosted_u,
+                       const dealii::Point<2>                   &centre,
+                       double                                    radius,
+                       double                                    angle_degrees,
                        const std::string                        &directory,
                        const std::string                        &basename,
                        unsigned int                              index);

@@ -1,5 +1,6 @@
 #include "reference/wall_contact_theory.h"
 
+#include "reference/hertz_impact.h"
 #include "reference/log_contact_law.h"
 
 #include <cmath>
@@ -48,6 +49,22 @@ namespace DiskImpact
         {
           return "C";
         }
+        ForceLaw
+        force_law(const double e2,
+                  const double r,
+                  const double constant) const override
+        {
+          return disk_force_law(e2, r, constant);
+        }
+        OneDofImpact
+        elastic_impact(const double mass,
+                       const double velocity,
+                       const double e2,
+                       const double r,
+                       const double constant) const override
+        {
+          return one_dof_impact(velocity, mass, e2, r, constant);
+        }
       };
 
       /// Hertz's contact of a sphere, with the finite-size term.
@@ -88,8 +105,56 @@ namespace DiskImpact
         {
           return "D";
         }
+        ForceLaw
+        force_law(const double e2,
+                  const double r,
+                  const double constant) const override
+        {
+          return sphere_force_law(e2, r, constant);
+        }
+        OneDofImpact
+        elastic_impact(const double mass,
+                       const double velocity,
+                       const double e2,
+                       const double r,
+                       const double constant) const override
+        {
+          OneDofImpact impact;
+          if (constant == 0.)
+            {
+              const auto hertz    = hertz_sphere_impact(mass, e2, r, velocity);
+              impact.contact_time = hertz.contact_time;
+              impact.max_compression = hertz.max_overlap;
+              impact.max_force       = hertz.max_force;
+              return impact;
+            }
+          const auto law = force_law(e2, r, constant);
+          const auto collision =
+            collide(mass, velocity, law, 0., EndCriterion::overlap, 1e-12);
+          impact.contact_time    = collision.contact_time;
+          impact.max_compression = collision.max_overlap;
+          impact.max_force       = law.force(collision.max_overlap);
+          return impact;
+        }
       };
     } // namespace
+
+    Collision
+    WallContactTheory::viscous_impact(const double       mass,
+                                      const double       velocity,
+                                      const double       e2,
+                                      const double       r,
+                                      const double       constant,
+                                      const double       relaxation_time,
+                                      const EndCriterion end) const
+    {
+      return collide(mass,
+                     velocity,
+                     force_law(e2, r, constant),
+                     relaxation_time,
+                     end,
+                     1e-12);
+    }
 
     std::unique_ptr<WallContactTheory>
     wall_contact_theory(const bool sphere)

@@ -1,5 +1,8 @@
 #pragma once
 
+#include "reference/collision_ode.h"
+#include "reference/one_dof_impact.h"
+
 #include <memory>
 #include <string>
 
@@ -46,6 +49,43 @@ namespace DiskImpact
       /// "C" or "D", for column names and tables.
       virtual std::string
       constant_symbol() const = 0;
+
+      /**
+       * The 1-DOF model's wall law F(delta) of the centre-of-mass approach
+       * with the constant @p constant (the disk's C: force per unit
+       * thickness; the sphere's D), for collide().
+       */
+      virtual ForceLaw
+      force_law(double e2, double r, double constant) const = 0;
+
+      /**
+       * The elastic 1-DOF impact of a body of mass @p mass at speed
+       * @p velocity on force_law(): contact time, largest approach and
+       * force. Throws std::domain_error beyond the law's range.
+       */
+      virtual OneDofImpact
+      elastic_impact(double mass,
+                     double velocity,
+                     double e2,
+                     double r,
+                     double constant) const = 0;
+
+      /**
+       * The 1-DOF impact with Kelvin-Voigt viscosity, m delta'' + F +
+       * A delta' F' = 0 with A = @p relaxation_time (the viscous stress
+       * tau C : eps_dot is tau times the elastic stress of the velocity, so
+       * quasistatically the viscous force is tau dF/dt; docs/sphere.md),
+       * ended when the total force returns to zero (seed 002), or with
+       * @p end.
+       */
+      Collision
+      viscous_impact(double       mass,
+                     double       velocity,
+                     double       e2,
+                     double       r,
+                     double       constant,
+                     double       relaxation_time,
+                     EndCriterion end = EndCriterion::force) const;
     };
 
     /// The theory of the disk (@p sphere false) or of the sphere.

@@ -5,9 +5,10 @@
 #include "base/parameters.h"
 #include "body/geometry.h"
 #include "output/csv_table.h"
-#include "reference/collision_ode.h"
+#include "reference/hertz_impact.h"
 #include "reference/log_contact_law.h"
-#include "reference/one_dof_impact.h"
+#include "reference/viscoelastic_spheres.h"
+#include "reference/wall_contact_theory.h"
 #include "tasks/impact_simulation.h"
 
 #include <deal.II/base/utilities.h>
@@ -22,15 +23,21 @@ namespace DiskImpact
 
   namespace
   {
-    /// The contact-law constant of the 1-DOF model: "exact" is the
-    /// centre-of-mass constant C_com = -2 ln 2 - (1 + nu2)/4, "fit" the
-    /// earlier fit -1 - 2/pi - nu2/4 to the FE (docs/contact-law.md), else a
-    /// number.
+    /// The contact-law constant of the 1-DOF model. A disk's: "exact" is
+    /// the centre-of-mass constant C_com = -2 ln 2 - (1 + nu2)/4, "fit" the
+    /// earlier fit -1 - 2/pi - nu2/4 to the FE (docs/contact-law.md). A
+    /// sphere's finite-size constant D: "exact" is Hertz's law (D = 0),
+    /// the limit a / R -> 0. Else a number.
     double
-    parse_contact_law_constant(const std::string &text, const double nu2)
+    parse_contact_law_constant(const std::string &text,
+                               const double       nu2,
+                               const bool         sphere)
     {
       if (text == "exact")
-        return Reference::centre_of_mass_constant(nu2);
+        return sphere ? 0. : Reference::centre_of_mass_constant(nu2);
+      require(!(sphere && text == "fit"),
+              "Impact: 'Contact law constant = fit' is the disk's log-law "
+              "fit; a sphere takes 'exact' (Hertz, D = 0) or a number D");
       if (text == "fit")
         return -1. - 2. / M_PI - nu2 / 4.;
       // The whole text must be one finite number ("1x" is not).
@@ -71,16 +78,26 @@ namespace DiskImpact
     prm.declare_entry("Contact law constant",
                       "exact",
                       Patterns::Anything(),
-                      "Constant C of the log law in the 1-DOF reference model "
-                      "(time-step estimate, comparison): 'exact' for the "
-                      "centre-of-mass law C = -2 ln 2 - (1 + nu2)/4, 'fit' "
-                      "for the earlier fit C = -1 - 2/pi - nu2/4, or a "
-                      "number.");
+                      "Constant of the wall law in the 1-DOF reference model "
+                      "(time-step estimate, comparison). Disk: C of the log "
+                      "law, 'exact' for the centre-of-mass law C = -2 ln 2 - "
+                      "(1 + nu2)/4, 'fit' for the earlier fit C = -1 - 2/pi "
+                      "- nu2/4, or a number. Sphere: the finite-size constant "
+                      "D of delta = delta_Hertz + D P / (E* R), 'exact' for "
+                      "Hertz's law (D = 0), or a number.");
     prm.declare_entry("Output interval",
                       "20",
                       Patterns::Integer(0),
                       "Write the deformed state with stresses (impact.pvd) "
                       "every this many steps; 0: only the final state.");
+    prm.declare_entry("Revolved view",
+                      "0",
+                      Patterns::Double(0., 360.),
+                      "A sphere only: with each state of impact.pvd also "
+                      "write a 3D view (impact_3d.pvd), the meridian "
+                      "revolved about the axis through this angle in degrees "
+                      "(the surface and the two cut planes; 270 shows the "
+                      "inside); 0: none.");
     prm.declare_entry("Mode energies",
                       "20",
                       Patterns::Integer(0, 400),
@@ -137,6 +154,7 @@ namespace DiskImpact
     contact_law_constant    = prm.get("Contact law constant");
     margin                  = prm.get_double("Margin");
     output_interval         = prm.get_integer("Output interval");
+    revolved_view_angle     = prm.get_double("Revolved view");
     projected_modes         = prm.get_integer("Mode energies");
     sweep_velocities        = get_double_list(prm, "Velocities");
     sweep_poisson_ratios    = get_double_list(prm, "Poisson ratios");
@@ -151,7 +169,7 @@ namespace DiskImpact
     require(impact_velocity > 0. && impact_velocity <= 0.5,
             "Impact: 'Velocity' must satisfy 0 < v/c <= 0.5, got " +
               Utilities::to_string(impact_velocity));
-    parse_contact_law_constant(contact_law_constant, 0.);
+    parse_contact_law_constant(contact_law_constant, 0., false);
   }
 
   double
@@ -206,9 +224,12 @@ namespace DiskImpact
   }
 
   double
-  Impact::contact_law_constant_value(const double nu2) const
+  Impact::contact_law_constant_value(const Parameters &parameters) const
   {
-    return parse_contact_law_constant(contact_law_constant, nu2);
+    return parse_contact_law_constant(
+      contact_law_constant,
+      parameters.material.in_plane_poisson_ratio(),
+      parameters.geometry.is_axisymmetric());
   }
 
   CollisionEstimate
@@ -219,43 +240,48 @@ namespace DiskImpact
     const double E2       = material.in_plane_young_modulus();
     const double c        = material.velocity_unit();
     const double v0       = impact_velocity * c;
-    const double mass     = material.density() * M_PI * R * R;
-    const double C =
-      contact_law_constant_value(material.in_plane_poisson_ratio());
+    const double mass     = material.density() * parameters.geometry.volume();
+    const double C        = contact_law_constant_value(parameters);
+    const auto   theory =
+      Reference::wall_contact_theory(parameters.geometry.is_axisymmetric());
     CollisionEstimate estimate;
     try
       {
-        const auto one_dof    = Reference::one_dof_impact(v0, mass, E2, R, C);
+        const auto one_dof    = theory->elastic_impact(mass, v0, E2, R, C);
         estimate.contact_time = one_dof.contact_time;
-        estimate.largest_load = one_dof.max_force / (M_PI * E2 * R);
+        estimate.largest_load = one_dof.max_force / theory->force_unit(E2, R);
         estimate.largest_compression  = one_dof.max_compression;
         estimate.one_dof_contact_time = one_dof.contact_time * c / R;
         estimate.one_dof_delta_max    = one_dof.max_compression / R;
         // With Kelvin-Voigt viscosity: m xi'' + F + tau xi' F' = 0 (seed
-        // 000, eq. 4 with A = tau), ended when the force returns to zero.
+        // 000, eq. 4, and seed 003, eq. 5, with A = tau), ended when the
+        // force returns to zero.
         const double tau = material.relaxation_time();
         if (tau > 0.)
           {
             const auto viscous =
-              Reference::collide(mass,
-                                 v0,
-                                 Reference::disk_force_law(E2, R, C),
-                                 tau,
-                                 Reference::EndCriterion::force,
-                                 1e-12);
-            estimate.one_dof_epsilon      = viscous.epsilon;
+              theory->viscous_impact(mass, v0, E2, R, C, tau);
+            estimate.one_dof_epsilon = viscous.epsilon;
+            // The same collision ended where the overlap returns to zero
+            // (the seeds' criterion, admitting an attractive force).
+            estimate.one_dof_epsilon_overlap =
+              theory
+                ->viscous_impact(
+                  mass, v0, E2, R, C, tau, Reference::EndCriterion::overlap)
+                .epsilon;
             estimate.one_dof_contact_time = viscous.contact_time * c / R;
             estimate.one_dof_delta_max    = viscous.max_overlap / R;
           }
       }
     catch (const std::domain_error &)
       {
-        // Beyond the log law's largest compression: no 1-DOF collision;
-        // the contact time and load of seed 001's eq. 61.
-        estimate.one_dof_contact_time = std::nan("");
-        estimate.one_dof_delta_max    = std::nan("");
-        estimate.one_dof_epsilon      = std::nan("");
-        const double speed            = impact_velocity;
+        // Beyond the disk's log law: no 1-DOF collision; the contact time
+        // and load of seed 001's eq. 61.
+        estimate.one_dof_contact_time    = std::nan("");
+        estimate.one_dof_delta_max       = std::nan("");
+        estimate.one_dof_epsilon         = std::nan("");
+        estimate.one_dof_epsilon_overlap = std::nan("");
+        const double speed               = impact_velocity;
         const double delta    = speed * R * std::sqrt(std::log(4. / speed));
         estimate.contact_time = M_PI * delta / v0;
         estimate.largest_compression = delta;
@@ -265,10 +291,49 @@ namespace DiskImpact
   }
 
   double
+  Impact::dissipation_parameter(const Parameters &parameters) const
+  {
+    const auto  &material = parameters.material;
+    const double R        = parameters.geometry.radius();
+    const double E2       = material.in_plane_young_modulus();
+    const double mass     = material.density() * parameters.geometry.volume();
+    const double tau      = material.relaxation_time();
+    if (!parameters.geometry.is_axisymmetric())
+      // Schwager's alpha = A sqrt(pi E2 / m) with A = tau (seed 000).
+      return tau * std::sqrt(M_PI * E2 / mass);
+    // Seed 003's u = (v / g*)^{1/5} with A = tau, eq. 32.
+    if (!(tau > 0.))
+      return 0.;
+    return Reference::sphere_scaled_velocity(
+      mass,
+      Reference::hertz_sphere_stiffness(E2, R),
+      tau,
+      impact_velocity * material.velocity_unit());
+  }
+
+  double
+  Impact::force_unit(const Parameters &parameters)
+  {
+    const double R = parameters.geometry.radius();
+    return parameters.material.in_plane_young_modulus() * R *
+           (parameters.geometry.is_axisymmetric() ? R : 1.);
+  }
+
+  std::string
+  Impact::units(const Parameters &parameters)
+  {
+    return parameters.geometry.is_axisymmetric() ?
+             "lengths R, times R/c, velocities c = sqrt(E*/rho) with E* = "
+             "E/(1-nu^2), forces E* R^2, energies E* R^3 (the whole sphere)" :
+             "lengths R, times R/c, velocities c = sqrt(E2/rho), forces E2 "
+             "R, energies E2 R^2 (per unit thickness)";
+  }
+
+  double
   Impact::largest_half_width(const Parameters &parameters) const
   {
-    return Reference::hertz_half_width(
-             estimate_collision(parameters).largest_load) *
+    return Reference::wall_contact_theory(parameters.geometry.is_axisymmetric())
+             ->half_width(estimate_collision(parameters).largest_load) *
            parameters.geometry.radius();
   }
 
@@ -321,7 +386,8 @@ namespace DiskImpact
                     "one_dof_contact_time",
                     "one_dof_delta_max",
                     "alpha",
-                    "one_dof_epsilon"});
+                    "one_dof_epsilon",
+                    "one_dof_epsilon_overlap"});
     table.start_row();
     for (const double value : {s.velocity,
                                s.epsilon,
@@ -341,6 +407,7 @@ namespace DiskImpact
     table.add(s.one_dof_delta_max);
     table.add(s.schwager_alpha);
     table.add(s.one_dof_epsilon);
+    table.add(s.one_dof_epsilon_overlap);
     return table;
   }
 } // namespace DiskImpact

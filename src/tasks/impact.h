@@ -33,24 +33,26 @@ namespace DiskImpact
     double       time_step         = 0.;     ///< [R / c]
     double       wall_time_loop    = 0.;     ///< time stepping only [s]
     double       triangular_solve_time = 0.; ///< mean time of one solve [s]
-    unsigned int contact_dofs          = 0;  ///< DoFs the contact was condensed on
-    unsigned int massless_dofs         = 0;  ///< DoFs without inertia
-    double       schwager_alpha        = 0.; ///< tau sqrt(pi E2 / m)
-    double       one_dof_contact_time  = 0.; ///< 1-DOF log law [R / c]
-    double       one_dof_delta_max     = 0.; ///< 1-DOF log law, / R
-    double       one_dof_epsilon       = 1.; ///< 1-DOF log law with viscosity
+    unsigned int contact_dofs   = 0;  ///< DoFs the contact was condensed on
+    unsigned int massless_dofs  = 0;  ///< DoFs without inertia
+    double       schwager_alpha = 0.; ///< Impact::dissipation_parameter
+    double       one_dof_contact_time = 0.; ///< 1-DOF log law [R / c]
+    double       one_dof_delta_max    = 0.; ///< 1-DOF log law, / R
+    double       one_dof_epsilon      = 1.; ///< 1-DOF law with viscosity
+    double one_dof_epsilon_overlap    = 1.; ///< the same, ended at zero overlap
   };
 
   /// What the 1-DOF log-law model expects of a collision: the basis of the
   /// time step and of the mesh near the contact.
   struct CollisionEstimate
   {
-    double contact_time         = 0.; ///< [time], for the time step
-    double largest_load         = 0.; ///< P / (pi E2 R) at the largest force
-    double largest_compression  = 0.; ///< centre-of-mass approach [length]
-    double one_dof_contact_time = 0.; ///< [R / c]; NaN beyond the log law
-    double one_dof_delta_max    = 0.; ///< [R]; NaN beyond the log law
-    double one_dof_epsilon      = 1.; ///< with viscosity; NaN beyond it
+    double contact_time            = 0.; ///< [time], for the time step
+    double largest_load            = 0.; ///< P / (pi E2 R) at the largest force
+    double largest_compression     = 0.; ///< centre-of-mass approach [length]
+    double one_dof_contact_time    = 0.; ///< [R / c]; NaN beyond the log law
+    double one_dof_delta_max       = 0.; ///< [R]; NaN beyond the log law
+    double one_dof_epsilon         = 1.; ///< with viscosity; NaN beyond it
+    double one_dof_epsilon_overlap = 1.; ///< ended at zero overlap
   };
 
   /**
@@ -109,9 +111,26 @@ namespace DiskImpact
       dealii::Triangulation<2> &triangulation,
       double max_cells = std::numeric_limits<double>::infinity()) const;
 
-    /// C of the 1-DOF model's log law for the in-plane ratio @p nu2.
+    /// The constant of the 1-DOF model's wall law: a disk's C, a sphere's D.
     double
-    contact_law_constant_value(double nu2) const;
+    contact_law_constant_value(const Parameters &parameters) const;
+
+    /**
+     * The body's dimensionless dissipation: for a disk Schwager's
+     * alpha = tau sqrt(pi E2 / m) (seed 000), for a sphere seed 003's
+     * u = (v / g*)^{1/5} (eq. 32), both with A = tau; 0 if elastic.
+     */
+    double
+    dissipation_parameter(const Parameters &parameters) const;
+
+    /// The unit of the reported forces: E2 R for a disk (per unit
+    /// thickness), E2 R^2 = E* R^2 for a sphere.
+    static double
+    force_unit(const Parameters &parameters);
+
+    /// The units of the outputs, in words (HDF5 attribute, messages).
+    static std::string
+    units(const Parameters &parameters);
 
     ImpactSummary
     run(const Parameters &parameters,
@@ -124,6 +143,13 @@ namespace DiskImpact
     /// The one-row summary table.
     static CsvTable
     summary_table(const ImpactSummary &summary);
+
+    /// The angle of the sphere's 3D view in degrees (0: none).
+    double
+    revolved_view() const
+    {
+      return revolved_view_angle;
+    }
 
   private:
     friend class ImpactSimulation;
@@ -139,6 +165,7 @@ namespace DiskImpact
     std::string         contact_law_constant    = "exact";
     double              margin                  = 0.2;
     unsigned int        output_interval         = 20;
+    double              revolved_view_angle     = 0.; ///< degrees; 0: none
     unsigned int        projected_modes         = 20;
   };
 } // namespace DiskImpact

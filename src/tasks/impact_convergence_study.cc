@@ -296,9 +296,13 @@ namespace DiskImpact
   CsvTable
   ImpactConvergenceStudy::estimates_table(const ConvergedEpsilon &result)
   {
-    CsvTable table(
-      {"factor", "observed_order", "order_scatter", "clean", "limit",
-       "correction", "error"});
+    CsvTable table({"factor",
+                    "observed_order",
+                    "order_scatter",
+                    "clean",
+                    "limit",
+                    "correction",
+                    "error"});
     for (unsigned int i = 0; i < result.factors.size(); ++i)
       {
         const auto &e = result.estimates[i];
@@ -336,8 +340,8 @@ namespace DiskImpact
       else
         why << "  (not extrapolated: the orders of the last three triples "
                "scatter by "
-            << std::fixed << std::setprecision(2) << e.order_scatter
-            << " > " << clean_order_scatter << ")";
+            << std::fixed << std::setprecision(2) << e.order_scatter << " > "
+            << clean_order_scatter << ")";
       return why.str();
     }
   } // namespace

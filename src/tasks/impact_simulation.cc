@@ -25,7 +25,7 @@ namespace DiskImpact
   {
     /// What makes an impact's result unphysical, for the messages.
     const std::string likely_causes =
-      "the disk is far too stiff or too soft: volumetric locking (a Poisson "
+      "the body is far too stiff or too soft: volumetric locking (a Poisson "
       "ratio near 0.5 in plane strain with low 'Degree'), too coarse a mesh, "
       "a time step or 'Penalty factor' far off";
 
@@ -69,7 +69,8 @@ namespace DiskImpact
                const CsvTable            &modes,
                const std::vector<double> &displacement,
                const std::vector<double> &velocity,
-               const std::string         &parameters_json)
+               const std::string         &parameters_json,
+               const std::string         &units)
     {
       Hdf5Output file(filename);
       file.write_table("summary", Impact::summary_table(summary));
@@ -92,10 +93,7 @@ namespace DiskImpact
         }
       file.write_vector("final_state", "displacement", displacement);
       file.write_vector("final_state", "velocity", velocity);
-      file.set_attribute("/",
-                         "units",
-                         "lengths R, times R/c, velocities c = sqrt(E2/rho), "
-                         "forces E2 R, energies E2 R^2 (per unit thickness)");
+      file.set_attribute("/", "units", units);
       file.set_attribute("/", "parameters", parameters_json);
       file.finish();
     }
@@ -113,17 +111,16 @@ namespace DiskImpact
       , E2(parameters.material.in_plane_young_modulus())
       , c(parameters.material.velocity_unit())
       , v0(impact.velocity() * c)
-      , mass(parameters.material.density() * M_PI * R * R)
-      , factor(parameters.geometry.is_half_disk() ? 2. : 1.)
+      , mass(parameters.material.density() * parameters.geometry.volume())
+      , factor(1. / parameters.geometry.domain_share())
+      , force_unit(Impact::force_unit(parameters))
       , triangulation(communicator,
                       Triangulation<2>::limit_level_difference_at_vertices)
       , op(parameters.finite_element.degree)
       , series(time_series_table())
   {
-    summary.velocity = impact.velocity();
-    // Schwager's alpha = A sqrt(pi E2 / m) with A = tau (seed 000).
-    summary.schwager_alpha =
-      parameters.material.relaxation_time() * std::sqrt(M_PI * E2 / mass);
+    summary.velocity       = impact.velocity();
+    summary.schwager_alpha = impact.dissipation_parameter(parameters);
   }
 
   ImpactSummary
@@ -164,11 +161,13 @@ namespace DiskImpact
   void
   ImpactSimulation::estimate_collision()
   {
-    const auto estimate          = impact.estimate_collision(parameters);
-    contact_time_estimate        = estimate.contact_time;
-    summary.one_dof_contact_time = estimate.one_dof_contact_time;
-    summary.one_dof_delta_max    = estimate.one_dof_delta_max;
-    summary.one_dof_epsilon      = estimate.one_dof_epsilon;
+    const auto estimate             = impact.estimate_collision(parameters);
+    contact_time_estimate           = estimate.contact_time;
+    approach_estimate               = estimate.largest_compression;
+    summary.one_dof_contact_time    = estimate.one_dof_contact_time;
+    summary.one_dof_delta_max       = estimate.one_dof_delta_max;
+    summary.one_dof_epsilon         = estimate.one_dof_epsilon;
+    summary.one_dof_epsilon_overlap = estimate.one_dof_epsilon_overlap;
   }
 
   void
@@ -321,7 +320,8 @@ namespace DiskImpact
         };
         if (!solver->solve_condensed(y_C,
                                      force,
-                                     integrator.newton_tolerance() * R,
+                                     integrator.newton_tolerance() *
+                                       approach_estimate,
                                      integrator.max_newton_iterations(),
                                      u1_C,
                                      iterations))
@@ -394,7 +394,7 @@ namespace DiskImpact
     const double total   = kinetic + strain + factor * step.energy + dissipated;
     // The step's mean force (its impulse / dt): the time discretization
     // fixes this mean, not the end-of-step force (docs/impact.md).
-    const double force = factor * step.force_average / (E2 * R);
+    const double force = factor * step.force_average / force_unit;
     energy_error =
       std::max(energy_error, std::abs(total - energy_initial) / energy_initial);
     series.start_row();
@@ -448,28 +448,42 @@ namespace DiskImpact
   void
   ImpactSimulation::snapshot()
   {
-    if (with_outputs)
-      snapshots.emplace_back(
+    if (!with_outputs)
+      return;
+    const auto  ghosted_u = op.create_ghosted(u);
+    const auto &directory = parameters.run.output_directory;
+    snapshots.emplace_back(t * c / R,
+                           write_deformed_state(op,
+                                                parameters.material,
+                                                ghosted_u,
+                                                directory,
+                                                "impact",
+                                                snapshots.size()));
+    if (impact.revolved_view_angle > 0.)
+      revolved_snapshots.emplace_back(
         t * c / R,
-        write_deformed_state(op,
+        write_revolved_state(op,
                              parameters.material,
-                             op.create_ghosted(u),
-                             parameters.run.output_directory,
-                             "impact",
-                             snapshots.size()));
+                             ghosted_u,
+                             parameters.geometry.center(),
+                             R,
+                             impact.revolved_view_angle,
+                             directory,
+                             "impact_3d",
+                             revolved_snapshots.size()));
   }
 
   void
   ImpactSimulation::finish()
   {
     const double v_com_final = mean_along_normal(v);
-    const double disk_mass   = factor * normal_mass;
+    const double body_mass   = factor * normal_mass;
     summary.epsilon          = -v_com_final / v_com_initial;
     summary.contact_time     = contact_end * c / R;
     summary.energy_error     = energy_error;
     summary.impulse_error =
-      std::abs(disk_mass * (v_com_final - v_com_initial) - impulse) /
-      (disk_mass * v0);
+      std::abs(body_mass * (v_com_final - v_com_initial) - impulse) /
+      (body_mass * v0);
     summary.factorizations = factorizations_before + solver->n_factorizations();
     summary.triangular_solves = solves_before + solver->n_triangular_solves();
     summary.time_step         = dt * c / R;
@@ -491,7 +505,7 @@ namespace DiskImpact
     if (!(eps >= 0. && eps <= 1. + 1e-6))
       fail("0 <= epsilon <= 1",
            "epsilon = " + approximately(eps, 6) +
-             " is impossible for a passive disk; " + likely_causes);
+             " is impossible for a passive body; " + likely_causes);
     const auto &integrator = parameters.time_integrator;
     if (integrator.conserves_energy() &&
         !(summary.energy_error <= integrator.energy_error_tolerance()))
@@ -530,6 +544,10 @@ namespace DiskImpact
       write_atomically(directory + "/impact.pvd", [&](std::ostream &out) {
         DataOutBase::write_pvd_record(out, snapshots);
       });
+      if (!revolved_snapshots.empty())
+        write_atomically(directory + "/impact_3d.pvd", [&](std::ostream &out) {
+          DataOutBase::write_pvd_record(out, revolved_snapshots);
+        });
       if (projection)
         modes.write(directory + "/mode_energies.csv");
       write_hdf5(directory + "/impact.h5",
@@ -538,7 +556,8 @@ namespace DiskImpact
                  modes,
                  final_u,
                  final_v,
-                 parameters.run.parameters_json);
+                 parameters.run.parameters_json,
+                 Impact::units(parameters));
     });
   }
 } // namespace DiskImpact

@@ -94,9 +94,11 @@ namespace DiskImpact
     const bool        with_outputs;
     /// R, E2, c, v_i, the disk's mass, 2 on a half disk.
     double R, E2, c, v0, mass, factor;
+    double force_unit; ///< E2 R (disk, per unit thickness) or E2 R^2
 
     ImpactSummary summary;
     double        contact_time_estimate = 0.;
+    double        approach_estimate     = 0.; ///< largest approach, 1-DOF
 
     dealii::parallel::distributed::Triangulation<2> triangulation;
     ElasticityOperator                              op;
@@ -129,5 +131,6 @@ namespace DiskImpact
 
     CsvTable                                    series;
     std::vector<std::pair<double, std::string>> snapshots;
+    std::vector<std::pair<double, std::string>> revolved_snapshots;
   };
 } // namespace DiskImpact

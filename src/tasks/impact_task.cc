@@ -26,21 +26,26 @@ namespace DiskImpact
       Impact::write_summary(s,
                             parameters.run.output_directory + "/summary.csv");
     });
+    const bool         sphere = parameters.geometry.is_axisymmetric();
+    const std::string  model  = sphere ? "1-DOF Hertz" : "1-DOF log law";
     std::ostringstream out;
     out.precision(8);
     out << "  DoFs " << s.n_dofs << ", time step " << s.time_step
         << " R/c, steps " << s.steps << ", Newton iterations "
         << s.newton_iterations << ", factorizations " << s.factorizations
         << ", triangular solves " << s.triangular_solves << "\n"
-        << "  epsilon = " << s.epsilon
-        << " (1-DOF log law: " << s.one_dof_epsilon << ")\n"
-        << "  contact time = " << s.contact_time
-        << " R/c (1-DOF log law: " << s.one_dof_contact_time << ")\n"
-        << "  delta_max = " << s.delta_max
-        << " R (1-DOF log law: " << s.one_dof_delta_max << ")\n"
-        << "  force_max = " << s.force_max << " E2 R\n"
-        << "  Schwager's alpha = tau sqrt(pi E2 / m) = " << s.schwager_alpha
+        << "  epsilon = " << s.epsilon << " (" << model << ": "
+        << s.one_dof_epsilon
+        << "; ended at zero overlap: " << s.one_dof_epsilon_overlap << ")\n"
+        << "  contact time = " << s.contact_time << " R/c (" << model << ": "
+        << s.one_dof_contact_time << ")\n"
+        << "  delta_max = " << s.delta_max << " R (" << model << ": "
+        << s.one_dof_delta_max << ")\n"
+        << "  force_max = " << s.force_max << (sphere ? " E* R^2" : " E2 R")
         << "\n"
+        << (sphere ? "  seed 003's u = (v / g*)^(1/5) = " :
+                     "  Schwager's alpha = tau sqrt(pi E2 / m) = ")
+        << s.schwager_alpha << "\n"
         << "  energy error = " << s.energy_error
         << ", impulse error = " << s.impulse_error << "\n"
         << "  time stepping: " << s.wall_time_loop << " s, "

@@ -237,7 +237,7 @@ namespace DiskImpact
                                  const std::string &filename) const
   {
     const double nu2 = parameters.material.in_plane_poisson_ratio();
-    const double C   = parameters.impact.contact_law_constant_value(nu2);
+    const double C   = parameters.impact.contact_law_constant_value(parameters);
     const Reference::SchwagerDiskRestitution schwager;
     std::cout << "Disk: log law with C = " << C << " (nu2 = " << nu2
               << "): epsilon of the 1-DOF ODE (force and overlap end) and "
@@ -377,7 +377,7 @@ namespace DiskImpact
                                      const std::string &filename) const
   {
     const double       nu2 = parameters.material.in_plane_poisson_ratio();
-    const double       C   = parameters.impact.contact_law_constant_value(nu2);
+    const double       C   = parameters.impact.contact_law_constant_value(parameters);
     const unsigned int largest =
       *std::max_element(mode_counts.begin(), mode_counts.end());
     std::cout << "Rayleigh: vibration left by the collision, log law with C = "

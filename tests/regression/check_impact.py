@@ -3,7 +3,7 @@
 
 usage: check_impact.py summary.csv [--epsilon E TOL] [--energy TOL]
        [--impulse TOL] [--one-dof TOL] [--factorizations N]
-       [--solves-per-step MAX]
+       [--solves-per-step MAX] [--one-dof-epsilon TOL]
 """
 import argparse
 import csv
@@ -16,6 +16,8 @@ p.add_argument("--energy", type=float, help="bound on energy_error")
 p.add_argument("--impulse", type=float, help="bound on impulse_error")
 p.add_argument("--one-dof", type=float,
                help="relative bound on contact time and delta_max vs the 1-DOF model")
+p.add_argument("--one-dof-epsilon", type=float,
+               help="bound on |epsilon - one_dof_epsilon| (viscoelastic)")
 p.add_argument("--factorizations", type=int)
 p.add_argument("--solves-per-step", type=float,
                help="bound on triangular_solves / steps (solves with the "
@@ -37,6 +39,10 @@ if a.one_dof is not None:
                     ("delta_max", "one_dof_delta_max")):
         rel = float(s[fe]) / float(s[ref]) - 1
         checks.append((fe + " / 1-DOF - 1", rel, abs(rel) <= a.one_dof))
+if a.one_dof_epsilon is not None:
+    diff = float(s["epsilon"]) - float(s["one_dof_epsilon"])
+    checks.append(("epsilon - 1-DOF epsilon", diff,
+                   abs(diff) <= a.one_dof_epsilon))
 if a.factorizations is not None:
     checks.append(("factorizations", int(s["factorizations"]),
                    int(s["factorizations"]) == a.factorizations))

@@ -6,13 +6,17 @@
 - the vibration energy found in the projected modes after the impact is at
   most the energy the translation lost, 1 - epsilon^2 (the modes are
   M-orthonormal, so their energies add);
-- the mode carrying most energy during the collision is (n, l) = (TOP).
+- the mode carrying most energy during the collision is (n, l) = (TOP);
+- with --revolved (a sphere's 'Revolved view'), impact_3d.pvd lists the
+  times of impact.pvd and every file it names is there, with its pieces.
 
-usage: check_impact_outputs.py OUTPUT_DIR --top N L
+usage: check_impact_outputs.py OUTPUT_DIR --top N L [--revolved]
 """
 import argparse
 import csv
 import math
+import os
+import re
 import sys
 
 import h5py
@@ -23,6 +27,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("directory")
     parser.add_argument("--top", type=int, nargs=2, required=True)
+    parser.add_argument("--revolved", action="store_true")
     args = parser.parse_args()
 
     series = list(csv.DictReader(open(f"{args.directory}/impact.csv")))
@@ -60,8 +65,41 @@ def main():
     if (int(top["n"]), int(top["l"])) != tuple(args.top):
         print(f"FAIL: expected ({args.top[0]},{args.top[1]}) on top")
         ok = False
+    if args.revolved:
+        ok = check_revolved_view(args.directory) and ok
     print("OK" if ok else "FAILED")
     sys.exit(0 if ok else 1)
+
+
+def pvd_records(filename):
+    """(time, file) of each DataSet of a .pvd collection."""
+    text = open(filename).read()
+    return [(float(t), f) for t, f in re.findall(
+        r'timestep="([^"]+)"[^>]*file="([^"]+)"', text)]
+
+
+def check_revolved_view(directory):
+    """impact_3d.pvd: the times of impact.pvd, and its files complete."""
+    flat = pvd_records(f"{directory}/impact.pvd")
+    revolved = pvd_records(f"{directory}/impact_3d.pvd")
+    ok = [t for t, _ in flat] == [t for t, _ in revolved] and len(flat) > 1
+    if not ok:
+        print("FAIL: impact_3d.pvd does not list the times of impact.pvd")
+    for _, name in revolved:
+        path = os.path.join(directory, name)
+        pieces = re.findall(r'Source="([^"]+)"', open(path).read())
+        missing = [piece for piece in pieces
+                   if not os.path.getsize(os.path.join(directory, piece))]
+        text = open(path).read()
+        for field in ("displacement", "stress", "hoop_stress"):
+            if f'Name="{field}"' not in text:
+                print(f"FAIL: {name} has no field {field}")
+                ok = False
+        if not pieces or missing:
+            print(f"FAIL: {name} misses pieces {missing}")
+            ok = False
+    print(f"revolved view: {len(revolved)} states")
+    return ok
 
 
 if __name__ == "__main__":

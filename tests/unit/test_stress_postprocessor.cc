@@ -312,7 +312,7 @@ TEST_CASE("sphere: hoop stress of a uniform expansion, on and off the axis",
       inputs.solution_gradients = {{g[0], g[1]}};
 
       std::vector<dealii::Vector<double>> sigma(1, dealii::Vector<double>(4)),
-        measures(1, dealii::Vector<double>(4));
+        measures(1, dealii::Vector<double>(5));
       tensor.evaluate_vector_field(inputs, sigma);
       scalars.evaluate_vector_field(inputs, measures);
       CHECK(sigma[0][0] == Approx(3. * K * e).epsilon(1e-14));
@@ -320,5 +320,8 @@ TEST_CASE("sphere: hoop stress of a uniform expansion, on and off the axis",
       CHECK(sigma[0][1] == Approx(0.).margin(1e-18));
       CHECK(measures[0][0] == Approx(0.).margin(1e-15));           // von Mises
       CHECK(measures[0][3] == Approx(-3. * K * e).epsilon(1e-14)); // pressure
+      CHECK(measures[0][4] == Approx(3. * K * e).epsilon(1e-14));  // hoop
     }
+  CHECK(scalars.get_names().back() == "hoop_stress");
+  CHECK(scalars.get_data_component_interpretation().size() == 5);
 }

@@ -358,3 +358,37 @@ TEST_CASE("Hertz sphere impact in closed form against the integrated ODE",
             Approx(2.94328).epsilon(1e-5));
     }
 }
+
+TEST_CASE("Finite sphere's wall law: the inverse of delta_H(P) + D P/(E* R)",
+          "[reference][sphere]")
+{
+  // The law is given as delta(P); the force law inverts it. Independent
+  // reference: delta(F(delta)) must give delta back, and F' must match a
+  // central difference; D = 0 is Hertz's rho delta^{3/2}.
+  const double E_star = 1.3, R = 0.7;
+  const double rho = DiskImpact::Reference::hertz_sphere_stiffness(E_star, R);
+  const auto   approach = [&](const double P, const double D) {
+    return std::cbrt(9. * P * P / (16. * R * E_star * E_star)) +
+           D * P / (E_star * R);
+  };
+  for (const double D : {0., -0.45, 0.3})
+    {
+      const auto law = DiskImpact::Reference::sphere_force_law(E_star, R, D);
+      for (const double delta : {1e-6, 1e-3, 2e-2, 0.1})
+        {
+          CAPTURE(D, delta);
+          const double P = law.force(delta);
+          CHECK(approach(P, D) == Approx(delta).epsilon(1e-12));
+          const double h = 1e-6 * delta;
+          CHECK(law.derivative(delta) ==
+                Approx((law.force(delta + h) - law.force(delta - h)) / (2. * h))
+                  .epsilon(1e-7));
+          if (D == 0.)
+            CHECK(P == Approx(rho * std::pow(delta, 1.5)).epsilon(1e-13));
+        }
+      CHECK(law.force(-1e-3) == 0.);
+    }
+  // D < 0: beyond the largest approach the law has no force.
+  const auto soft = DiskImpact::Reference::sphere_force_law(E_star, R, -0.45);
+  CHECK_THROWS_AS(soft.force(2. * R), std::domain_error);
+}
