@@ -80,18 +80,23 @@ namespace DiskImpact
       4);
   }
 
-  std::string
-  write_revolved_state(const ElasticityOperator         &op,
-                       const Material                   &material,
-                       const PETScWrappers::MPI::Vector &ghosted_u,
-                       const Point<2>                   &centre,
-                       const double                      radius,
-                       const double                      angle_degrees,
-                       const std::string                &directory,
-                       const std::string                &basename,
-                       const unsigned int                index)
+  std::pair<std::string, std::string>
+  write_deformed_and_revolved_state(const ElasticityOperator         &op,
+                                    const Material                   &material,
+                                    const PETScWrappers::MPI::Vector &ghosted_u,
+                                    const Point<2>                   &centre,
+                                    const double                      radius,
+                                    const double       angle_degrees,
+                                    const std::string &directory,
+                                    const std::string &basename,
+                                    const unsigned int index)
   {
-    const StatePatches state(op, material, ghosted_u);
+    // One set of patches (the stresses evaluated once) for both files.
+    StatePatches state(op, material, ghosted_u);
+    state.data_out.set_flags(vtu_flags());
+    const MPI_Comm    communicator = op.get_dof_handler().get_communicator();
+    const std::string flat         = state.data_out.write_vtu_with_pvtu_record(
+      directory + "/", basename, index, communicator, 4);
     // About one sector per 10 degrees.
     const auto sectors =
       static_cast<unsigned int>(std::max(1., std::ceil(angle_degrees / 10.)));
@@ -104,11 +109,8 @@ namespace DiskImpact
                       angle_degrees * M_PI / 180.,
                       sectors);
     view.set_flags(vtu_flags());
-    return view.write_vtu_with_pvtu_record(
-      directory + "/",
-      basename,
-      index,
-      op.get_dof_handler().get_communicator(),
-      4);
+    return {flat,
+            view.write_vtu_with_pvtu_record(
+              directory + "/", basename + "_3d", index, communicator, 4)};
   }
 } // namespace DiskImpact

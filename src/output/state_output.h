@@ -5,6 +5,7 @@
 #include <deal.II/lac/petsc_vector.h>
 
 #include <string>
+#include <utility>
 
 namespace DiskImpact
 {
@@ -27,20 +28,22 @@ namespace DiskImpact
                        unsigned int                              index);
 
   /**
-   * The same fields of a sphere (Material axisymmetric) as a 3D view: the
-   * meridian revolved about its axis through @p angle_degrees
-   * (RevolvedView), about one sector per 10 degrees; the sphere's centre
-   * @p centre and radius @p radius find its surface. Written as
-   * DIRECTORY/BASENAME_NNN.pvtu; returns its name relative to @p directory.
+   * write_deformed_state() for a sphere (Material axisymmetric), and from
+   * the same patches a 3D view: the meridian revolved about its axis
+   * through @p angle_degrees (RevolvedView), about one sector per 10
+   * degrees; the sphere's centre @p centre and radius @p radius find its
+   * surface. Writes DIRECTORY/BASENAME_NNN.pvtu and BASENAME_3d_NNN.pvtu;
+   * returns both names relative to @p directory.
    */
-  std::string
-  write_revolved_state(const ElasticityOperator                 &op,
-                       const Material                           &material,
-                       const dealii::PETScWrappers::MPI::Vector &ghosted_u,
-                       const dealii::Point<2>                   &centre,
-                       double                                    radius,
-                       double                                    angle_degrees,
-                       const std::string                        &directory,
-                       const std::string                        &basename,
-                       unsigned int                              index);
+  std::pair<std::string, std::string>
+  write_deformed_and_revolved_state(
+    const ElasticityOperator                 &op,
+    const Material                           &material,
+    const dealii::PETScWrappers::MPI::Vector &ghosted_u,
+    const dealii::Point<2>                   &centre,
+    double                                    radius,
+    double                                    angle_degrees,
+    const std::string                        &directory,
+    const std::string                        &basename,
+    unsigned int                              index);
 } // namespace DiskImpact

@@ -450,27 +450,32 @@ namespace DiskImpact
   {
     if (!with_outputs)
       return;
-    const auto  ghosted_u = op.create_ghosted(u);
-    const auto &directory = parameters.run.output_directory;
-    snapshots.emplace_back(t * c / R,
-                           write_deformed_state(op,
-                                                parameters.material,
-                                                ghosted_u,
-                                                directory,
-                                                "impact",
-                                                snapshots.size()));
+    const auto   ghosted_u = op.create_ghosted(u);
+    const auto  &directory = parameters.run.output_directory;
+    const double time      = t * c / R;
     if (impact.revolved_view_angle > 0.)
-      revolved_snapshots.emplace_back(
-        t * c / R,
-        write_revolved_state(op,
-                             parameters.material,
-                             ghosted_u,
-                             parameters.geometry.center(),
-                             R,
-                             impact.revolved_view_angle,
-                             directory,
-                             "impact_3d",
-                             revolved_snapshots.size()));
+      {
+        const auto [flat, revolved] =
+          write_deformed_and_revolved_state(op,
+                                            parameters.material,
+                                            ghosted_u,
+                                            parameters.geometry.center(),
+                                            R,
+                                            impact.revolved_view_angle,
+                                            directory,
+                                            "impact",
+                                            snapshots.size());
+        snapshots.emplace_back(time, flat);
+        revolved_snapshots.emplace_back(time, revolved);
+      }
+    else
+      snapshots.emplace_back(time,
+                             write_deformed_state(op,
+                                                  parameters.material,
+                                                  ghosted_u,
+                                                  directory,
+                                                  "impact",
+                                                  snapshots.size()));
   }
 
   void
