@@ -61,7 +61,9 @@ namespace DiskImpact
                       "total energy (kinetic + strain + contact + "
                       "dissipated), relative to the initial energy, that a "
                       "run may show; more ends the run with an error (the "
-                      "balance is its accuracy check) [-].");
+                      "balance is its accuracy check). Every scheme: the "
+                      "largest growth of the total energy (energy created "
+                      "by an unstable step) [-].");
     prm.declare_entry("Maximum step cuts",
                       "4",
                       Patterns::Integer(0, 20),

@@ -397,6 +397,8 @@ namespace DiskImpact
     const double force = factor * step.force_average / force_unit;
     energy_error =
       std::max(energy_error, std::abs(total - energy_initial) / energy_initial);
+    energy_growth =
+      std::max(energy_growth, (total - energy_initial) / energy_initial);
     series.start_row();
     for (const double value : {time * c / R,
                                x_com,
@@ -520,6 +522,16 @@ namespace DiskImpact
              " of the initial energy, more than 'Energy tolerance' = " +
              approximately(integrator.energy_error_tolerance()) +
              "; lower 'Newton tolerance' or 'Time step fraction'");
+    // The trapezoidal contact force of 'newmark' and 'generalized alpha' is
+    // not stable for a stiff contact: the energy can grow without bound,
+    // and epsilon with it.
+    if (!(energy_growth <= integrator.energy_error_tolerance()))
+      fail("energy growth",
+           "the total energy grew by " + approximately(energy_growth) +
+             " of the initial energy, more than 'Energy tolerance' = " +
+             approximately(integrator.energy_error_tolerance()) +
+             " (the scheme is unstable for this contact); use 'Scheme' = "
+             "energy conserving or lower 'Time step fraction'");
     // The quasistatic 1-DOF model (log law) is no good reference for the
     // exponential wall, nor beyond the log law's range (NaN).
     if (parameters.contact.law_kind() != WallLawKind::penalty)

@@ -117,6 +117,8 @@ namespace DiskImpact
 
     double dt = 0., t = 0.;
     double impulse = 0., energy_error = 0.;
+    /// max (E(t) - E(0)) / E(0): no scheme may create energy.
+    double energy_growth = 0.;
     /// Energy dissipated by the viscosity so far (whole disk).
     double       dissipated = 0.;
     ContactState state;
