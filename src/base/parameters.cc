@@ -17,6 +17,7 @@ namespace DiskImpact
   Parameters::declare_parameters(ParameterHandler &prm)
   {
     RunParameters::declare_parameters(prm);
+    UnitSystem::declare_parameters(prm);
     BodyGeometry::declare_parameters(prm);
     Material::declare_parameters(prm);
     FiniteElementParameters::declare_parameters(prm);
@@ -29,6 +30,7 @@ namespace DiskImpact
     ImpactConvergenceStudy::declare_parameters(prm);
     ReferenceModels::declare_parameters(prm);
     ModalExpansionStudy::declare_parameters(prm);
+    RestitutionLaw::declare_parameters(prm);
   }
 
   void
@@ -38,6 +40,23 @@ namespace DiskImpact
     std::ostringstream json;
     prm.print_parameters(json, ParameterHandler::ShortJSON);
     run.parameters_json = json.str();
+    units.parse_parameters(prm);
+    if (!units.is_si())
+      return parse_physics(prm);
+    // The SI entries, mapped to their dimensionless values in a copy: the
+    // run's used_parameters keep what the user wrote.
+    ParameterHandler dimensionless;
+    declare_parameters(dimensionless);
+    std::stringstream copy;
+    prm.print_parameters(copy, ParameterHandler::PRM);
+    dimensionless.parse_input(copy, "the SI parameters");
+    units.make_dimensionless(dimensionless, run.task);
+    parse_physics(dimensionless);
+  }
+
+  void
+  Parameters::parse_physics(ParameterHandler &prm)
+  {
     geometry.parse_parameters(prm);
     material.parse_parameters(prm);
     if (geometry.is_axisymmetric())
@@ -58,6 +77,7 @@ namespace DiskImpact
     impact_convergence.parse_parameters(prm);
     reference_models.parse_parameters(prm);
     modal_expansion.parse_parameters(prm);
+    restitution_law.parse_parameters(prm);
 
     require(geometry.is_axisymmetric() || impact.revolved_view() == 0.,
             "Impact: 'Revolved view' is a sphere's 3D view; a disk's "
@@ -105,12 +125,12 @@ namespace DiskImpact
       reference_models.check_velocities(
         impact.contact_law_constant_value(*this));
     if (run.task == Task::impact || run.task == Task::impact_convergence ||
-        run.task == Task::sweep)
+        run.runs_sweep())
       contact.check_wall(geometry, 0.05);
     if (run.task == Task::impact || run.task == Task::impact_convergence)
       time_integrator.check_time_step(
         impact.estimate_collision(*this).contact_time);
-    if (run.task == Task::sweep)
+    if (run.runs_sweep())
       for (const double v : impact.velocities())
         {
           Parameters point = *this;
@@ -118,7 +138,7 @@ namespace DiskImpact
           time_integrator.check_time_step(
             point.impact.estimate_collision(point).contact_time);
         }
-    if (run.task == Task::sweep)
+    if (run.runs_sweep())
       {
         require(!impact.velocities().empty(),
                 "Impact: 'Velocities' is empty: task 'sweep' needs at least "

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "base/run_parameters.h"
+#include "base/unit_system.h"
 #include "body/geometry.h"
 #include "contact/contact.h"
 #include "dynamics/time_integrator.h"
@@ -13,6 +14,7 @@
 #include "tasks/modal_expansion_task.h"
 #include "tasks/quasistatic_contact.h"
 #include "tasks/reference_models_task.h"
+#include "tasks/restitution_law.h"
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -28,10 +30,12 @@ namespace DiskImpact
   {
     static void
     declare_parameters(dealii::ParameterHandler &prm);
+    /// Parse @p prm; an SI run is parsed as its dimensionless equivalent.
     void
     parse_parameters(dealii::ParameterHandler &prm);
 
     RunParameters           run;
+    UnitSystem              units;
     BodyGeometry            geometry;
     Material                material;
     FiniteElementParameters finite_element;
@@ -44,6 +48,12 @@ namespace DiskImpact
     ImpactConvergenceStudy  impact_convergence;
     ReferenceModels         reference_models;
     ModalExpansionStudy     modal_expansion;
+    RestitutionLaw          restitution_law;
+
+  private:
+    /// Everything but 'Task', 'Output directory' and 'Units'.
+    void
+    parse_physics(dealii::ParameterHandler &prm);
   };
 
   /**

@@ -16,7 +16,8 @@ namespace DiskImpact
       "modal analysis",
       Patterns::Selection(
         "modal analysis|modal convergence|quasistatic contact|impact|"
-        "impact convergence|sweep|reference models|modal expansion impact"),
+        "impact convergence|sweep|reference models|modal expansion impact|"
+        "restitution law"),
       "What to compute. 'modal analysis': the lowest modes of "
       "the free disk compared with the analytic Bessel modes "
       "(modes.csv). 'modal convergence': the same on a "
@@ -34,7 +35,11 @@ namespace DiskImpact
       "reference_<model>.csv). 'modal expansion impact': the impact "
       "in the modal expansion of seed 001 with its smooth wall potential, "
       "extrapolated to all modes and hard contact (subsection Modal "
-      "expansion, modal_expansion.csv, modal_extrapolation.csv).");
+      "expansion, modal_expansion.csv, modal_extrapolation.csv). "
+      "'restitution law': the sweep with its convergence studies, then "
+      "epsilon(v) fitted and stated as input for DEM codes (subsection "
+      "Restitution law; restitution_law.csv, restitution_law.json, "
+      "dem/).");
     prm.declare_entry("Output directory",
                       "output/modal",
                       Patterns::Anything(),
@@ -53,9 +58,16 @@ namespace DiskImpact
       {"impact convergence", Task::impact_convergence},
       {"sweep", Task::sweep},
       {"reference models", Task::reference_models},
-      {"modal expansion impact", Task::modal_expansion_impact}};
+      {"modal expansion impact", Task::modal_expansion_impact},
+      {"restitution law", Task::restitution_law}};
     task             = tasks.at(prm.get("Task"));
     output_directory = prm.get("Output directory");
     require(!output_directory.empty(), "'Output directory' must not be empty");
+  }
+
+  bool
+  RunParameters::runs_sweep() const
+  {
+    return task == Task::sweep || task == Task::restitution_law;
   }
 } // namespace DiskImpact

@@ -16,7 +16,8 @@ namespace DiskImpact
     impact_convergence,
     sweep,
     reference_models,
-    modal_expansion_impact
+    modal_expansion_impact,
+    restitution_law
   };
 
   /**
@@ -29,6 +30,10 @@ namespace DiskImpact
     declare_parameters(dealii::ParameterHandler &prm);
     void
     parse_parameters(dealii::ParameterHandler &prm);
+
+    /// Whether the task runs the sweep ('sweep', 'restitution law').
+    bool
+    runs_sweep() const;
 
     Task        task = Task::modal_analysis;
     std::string output_directory;

@@ -178,6 +178,12 @@ namespace DiskImpact
   }
 
   double
+  Material::young_modulus() const
+  {
+    return young;
+  }
+
+  double
   Material::density() const
   {
     return rho;

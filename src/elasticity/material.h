@@ -70,6 +70,10 @@ namespace DiskImpact
     plane_model() const;
     std::string
     plane_model_name() const;
+    /// The 'Young modulus' entry: the 3D E (the in-plane one in plane
+    /// stress).
+    double
+    young_modulus() const;
     double
     density() const;
     double

@@ -60,9 +60,28 @@ namespace DiskImpact
             const EndCriterion end,
             const double       tolerance)
     {
+      return collide(
+        mass,
+        velocity,
+        law,
+        [&](const double xi, const double xi_dot) {
+          return dissipation * xi_dot * law.derivative(xi);
+        },
+        end,
+        tolerance);
+    }
+
+    Collision
+    collide(const double                                 mass,
+            const double                                 velocity,
+            const ForceLaw                              &law,
+            const std::function<double(double, double)> &dissipative_force,
+            const EndCriterion                           end,
+            const double                                 tolerance)
+    {
       using State      = std::array<double, 2>; // xi, xi'
       auto total_force = [&](const State &x) {
-        return law.force(x[0]) + dissipation * x[1] * law.derivative(x[0]);
+        return law.force(x[0]) + dissipative_force(x[0], x[1]);
       };
       auto rhs = [&](const State &x, State &dxdt, double) {
         dxdt[0] = x[1];
@@ -78,7 +97,7 @@ namespace DiskImpact
         tolerance,
         boost::numeric::odeint::runge_kutta_dopri5<State>());
       // The adaptive stepper grows the first step to what the law needs.
-      stepper.initialize(State{0., velocity}, 0., 1e-8);
+      stepper.initialize(State{{0., velocity}}, 0., 1e-8);
       Collision collision;
       for (unsigned int steps = 0; steps < 1000000; ++steps)
         {

@@ -52,5 +52,15 @@ namespace DiskImpact
             double          dissipation,
             EndCriterion    end,
             double          tolerance = 1e-13);
+
+    /// The same with any dissipative force f_d(xi, xi'):
+    /// m xi'' + F(xi) + f_d(xi, xi') = 0.
+    Collision
+    collide(double                                       mass,
+            double                                       velocity,
+            const ForceLaw                              &law,
+            const std::function<double(double, double)> &dissipative_force,
+            EndCriterion                                 end,
+            double                                       tolerance = 1e-13);
   } // namespace Reference
 } // namespace DiskImpact

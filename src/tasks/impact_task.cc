@@ -54,6 +54,14 @@ namespace DiskImpact
         << " solves with the factorized matrix (one: "
         << s.triangular_solve_time * 1e3 << " ms); " << s.contact_dofs
         << " contact DoFs condensed\n";
+    const UnitSystem &units = parameters.units;
+    if (units.is_si())
+      out << "  in SI: v = " << parameters.impact.velocity() * units.speed()
+          << " m/s, epsilon = " << s.epsilon
+          << ", contact time = " << s.contact_time * units.time()
+          << " s, delta_max = " << s.delta_max * units.length()
+          << " m, force_max = " << s.force_max * units.force() << ' '
+          << units.force_name() << "\n";
     pcout << out.str();
   }
 } // namespace DiskImpact

@@ -139,6 +139,7 @@ namespace DiskImpact
                        });
             break;
           case Task::sweep:
+          case Task::restitution_law:
             in_context("Sweep: the fastest impact's finest mesh", [&]() {
               // The fastest impact needs the largest contact zone.
               Parameters fastest =
@@ -169,7 +170,8 @@ namespace DiskImpact
     bool
     runs_one_mesh_per_rank(const Task task)
     {
-      return task == Task::sweep || task == Task::impact_convergence;
+      return task == Task::sweep || task == Task::restitution_law ||
+             task == Task::impact_convergence;
     }
   } // namespace
 

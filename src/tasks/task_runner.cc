@@ -50,6 +50,9 @@ namespace DiskImpact
       "epsilon_estimate.csv",
       "restitution.csv",
       "restitution.h5",
+      // restitution law
+      "restitution_law.csv",
+      "restitution_law.json",
       // reference models, modal expansion impact
       "reference_*.csv",
       "modal_expansion.csv",
@@ -88,6 +91,9 @@ namespace DiskImpact
           case Task::modal_expansion_impact:
             parameters.modal_expansion.run(parameters, communicator);
             break;
+          case Task::restitution_law:
+            parameters.restitution_law.run(parameters, resume, communicator);
+            break;
         }
     }
   } // namespace
@@ -105,7 +111,7 @@ namespace DiskImpact
     check_before_output(parameters, communicator);
     const OutputDirectory directory(parameters.run.output_directory,
                                     communicator);
-    const bool            resume = parameters.run.task == Task::sweep &&
+    const bool            resume = parameters.run.runs_sweep() &&
                         sweep_resumes(parameters, prm, communicator);
     // Kept: a resumed sweep's table; the reference models' other tables
     // (the models share one output directory, one file each).
@@ -121,6 +127,7 @@ namespace DiskImpact
           << " MPI rank(s), output in " << parameters.run.output_directory
           << "\nGeometry: " << parameters.geometry.description() << '\n';
     parameters.material.print_summary(pcout);
+    parameters.units.print_summary(pcout);
 
     try
       {
@@ -131,7 +138,7 @@ namespace DiskImpact
         // A run that failed (on all ranks alike) leaves no results that
         // could pass for its own; a sweep keeps its table, which marks the
         // points not done.
-        auto keep = resume || parameters.run.task == Task::sweep ?
+        auto keep = resume || parameters.run.runs_sweep() ?
                       sweep_result_files() :
                       std::vector<std::string>();
         keep.insert(keep.end(),

@@ -1,0 +1,24 @@
+#!/bin/bash
+# Installs the DEM codes used by bench/dem_collision.py if they are missing
+# (Debian packages liggghts -> /usr/bin/liggghts and lammps -> /usr/bin/lmp)
+# and prints the paths of both binaries.
+#
+# usage: bench/dem_check_deps.sh
+set -euo pipefail
+
+missing=()
+command -v liggghts >/dev/null || missing+=(liggghts)
+command -v lmp >/dev/null || missing+=(lammps)
+
+if [ ${#missing[@]} -gt 0 ]; then
+    sudo=""
+    [ "$(id -u)" -eq 0 ] || sudo="sudo"
+    echo "installing ${missing[*]}"
+    $sudo apt-get update || echo "apt-get update failed, trying the cached lists"
+    $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y "${missing[@]}"
+fi
+
+for exe in liggghts lmp; do
+    path=$(command -v $exe) || { echo "error: $exe still missing" >&2; exit 1; }
+    echo "$exe: $path"
+done

@@ -1,0 +1,229 @@
+#!/usr/bin/python3
+"""Head-on collision of two identical spheres in a DEM code (LIGGGHTS or LAMMPS).
+
+Two spheres of radius R and density rho (atom type 1) sit on the x axis,
+just apart, and move toward each other with speed v each (relative speed
+2v). No gravity, no walls, box boundaries far away. The contact model comes
+from a snippet file of ready-to-paste lines for the chosen code (SI units),
+which is copied verbatim into the generated input script after the atoms
+are created and before the run:
+
+  LIGGGHTS:  fix ... property/global youngsModulus / poissonsRatio /
+             coefficientRestitution / coefficientFriction ... lines and
+             pair_style gran model hertz tangential history / pair_coeff * *
+             (the script adds 'hard_particles yes', which LIGGGHTS 3.8 needs
+             for E > 1e9 Pa in SI units)
+  LAMMPS:    pair_style granular
+             pair_coeff * * hertz/material E damp nu tangential ... damping ...
+
+The time step is dt = t_H / 2000 with t_H the Hertz contact time
+2.94328 (15 m v^2 / (16 E* sqrt(R)))^(2/5) / v, m the sphere mass and
+E* = E / (1 - nu^2) (E and nu parsed from youngsModulus / poissonsRatio,
+or from the numbers after hertz/material, dmt or jkr). That wall-equivalent
+time equals the one of the two-sphere problem. The spheres start 20 steps
+of travel apart and run 3 t_H beyond that.
+
+The centre gap d - 2R and both x-velocities are written every step through
+fix print. Then
+  epsilon      = -(v1x' - v2x') / (v1x - v2x), before = first line,
+                 after = last line (the spheres must have separated),
+  contact_time = time with d < 2R, from the first and last overlapping
+                 steps, each end refined by linear interpolation of the gap
+                 between the bracketing steps.
+
+usage: bench/dem_collision.py --code liggghts|lammps --snippet FILE
+                              --radius R --density RHO --speeds v1 [v2 ...]
+                              [--work DIR]
+       prints 'speed <v> epsilon <eps> contact_time <t_c>' per speed.
+       Without --work each run happens in a temporary directory, removed
+       unless the run fails.
+
+As a module: collide(code, snippet_text, radius, density, speed, work_dir)
+returns (epsilon, contact_time); hertz_time(...) gives t_H.
+bench/dem_check_deps.sh installs both codes.
+"""
+import argparse
+import math
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+
+BINARY = {"liggghts": "liggghts", "lammps": "lmp"}
+STEPS_PER_CONTACT = 2000   # dt = t_H / STEPS_PER_CONTACT
+PRE_STEPS = 20             # steps of free travel before contact
+RUN_CONTACTS = 3           # run length after contact begins, in t_H
+
+
+class DEMError(RuntimeError):
+    """A DEM run that could not be set up, failed or gave unusable output."""
+
+    def __init__(self, message, log_tail=""):
+        super().__init__(message)
+        self.log_tail = log_tail
+
+
+def material(code, snippet):
+    """(E, nu) of atom type 1 as given in the snippet."""
+    if code == "liggghts":
+        E = re.search(r"\byoungsModulus\s+peratomtype\s+(\S+)", snippet)
+        nu = re.search(r"\bpoissonsRatio\s+peratomtype\s+(\S+)", snippet)
+    else:  # E damp nu
+        E = nu = re.search(r"\b(?:hertz/material|dmt|jkr)\s+(\S+)\s+\S+\s+"
+                           r"(\S+)", snippet)
+    try:
+        return float(E.group(1)), float(nu.group(nu.lastindex))
+    except (AttributeError, ValueError):
+        raise DEMError("cannot read Young's modulus and Poisson ratio from "
+                       "the %s snippet" % code) from None
+
+
+def hertz_time(radius, density, E, nu, speed):
+    """Hertz contact time of a sphere hitting a rigid wall at speed v."""
+    m = density * 4.0 / 3.0 * math.pi * radius**3
+    e_star = E / (1.0 - nu**2)
+    return 2.94328 * (15.0 * m * speed**2
+                      / (16.0 * e_star * math.sqrt(radius)))**0.4 / speed
+
+
+def input_script(code, snippet, radius, density, speed, dt, steps, gap):
+    """The complete input script; fix print writes 'step gap v1x v2x'."""
+    half = 4.0 * radius
+    x = radius + 0.5 * gap
+    if code == "liggghts":
+        setup = "communicate single vel yes"
+        hard = "hard_particles yes  # LIGGGHTS: allows E > 1e9 Pa in SI units\n"
+    else:
+        setup = "comm_modify vel yes"
+        hard = ""
+    return f"""\
+units si
+atom_style {"granular" if code == "liggghts" else "sphere"}
+atom_modify map array
+boundary f f f
+newton off
+{setup}
+region box block {-half!r} {half!r} {-half!r} {half!r} {-half!r} {half!r} units box
+create_box 1 box
+neighbor {0.1 * radius!r} bin
+neigh_modify delay 0 every 1 check yes
+create_atoms 1 single {-x!r} 0 0 units box
+create_atoms 1 single {x!r} 0 0 units box
+set atom 1 diameter {2 * radius!r} density {density!r} vx {speed!r}
+set atom 2 diameter {2 * radius!r} density {density!r} vx {-speed!r}
+{hard}
+# ---- contact model (snippet) ----
+{snippet.strip()}
+# ---- end of snippet ----
+
+fix integr all nve/sphere
+timestep {dt!r}
+variable s equal step
+variable g equal sqrt((x[2]-x[1])^2+(y[2]-y[1])^2+(z[2]-z[1])^2)-{2 * radius!r}
+variable v1 equal vx[1]
+variable v2 equal vx[2]
+fix hist all print 1 "${{s}} ${{g}} ${{v1}} ${{v2}}" file history.txt screen no
+thermo {steps}
+run {steps}
+"""
+
+
+def analyse(path, dt):
+    """(epsilon, contact_time) from the fix print history."""
+    rows = [[float(w) for w in line.split()] for line in open(path)
+            if line.strip() and not line.startswith("#")]
+    if len(rows) < 3:
+        raise DEMError("history %s has %d lines" % (path, len(rows)))
+    t = [r[0] * dt for r in rows]
+    gap = [r[1] for r in rows]
+    inside = [i for i, g in enumerate(gap) if g < 0.0]
+    if not inside:
+        raise DEMError("the spheres never touched")
+    first, last = inside[0], inside[-1]
+    if first == 0:
+        raise DEMError("the spheres overlap from the first output step")
+    if last == len(rows) - 1:
+        raise DEMError("the spheres are still in contact at the end of the run")
+    if len(inside) != last - first + 1:
+        raise DEMError("the spheres touched more than once")
+
+    def crossing(i, j):  # time of gap = 0 between rows i (gap >= 0) and j
+        return t[i] + (t[j] - t[i]) * gap[i] / (gap[i] - gap[j])
+
+    contact_time = crossing(last + 1, last) - crossing(first - 1, first)
+    before = rows[0][2] - rows[0][3]
+    after = rows[-1][2] - rows[-1][3]
+    return -after / before, contact_time
+
+
+def collide(code, snippet_text, radius, density, speed, work_dir=None):
+    """Run one collision; returns (epsilon, contact_time)."""
+    if code not in BINARY:
+        raise DEMError("unknown code %r (liggghts or lammps)" % code)
+    exe = shutil.which(BINARY[code])
+    if exe is None:
+        raise DEMError("%s binary '%s' not found on PATH (bench/"
+                       "dem_check_deps.sh installs it)" % (code, BINARY[code]))
+    if work_dir is None:  # a temporary directory, kept if the run fails
+        tmp = tempfile.mkdtemp(prefix="dem_collision_")
+        result = collide(code, snippet_text, radius, density, speed, tmp)
+        shutil.rmtree(tmp)
+        return result
+    E, nu = material(code, snippet_text)
+    dt = hertz_time(radius, density, E, nu, speed) / STEPS_PER_CONTACT
+    steps = PRE_STEPS + RUN_CONTACTS * STEPS_PER_CONTACT
+    gap = 2.0 * speed * PRE_STEPS * dt
+    run_dir = os.path.join(work_dir, "%s_v%r" % (code, speed))
+    os.makedirs(run_dir, exist_ok=True)
+    with open(os.path.join(run_dir, "in.collision"), "w") as f:
+        f.write(input_script(code, snippet_text, radius, density, speed, dt,
+                             steps, gap))
+    history = os.path.join(run_dir, "history.txt")
+    if os.path.exists(history):
+        os.remove(history)
+    log = os.path.join(run_dir, "run.log")
+    with open(log, "w") as out:
+        rc = subprocess.call([exe, "-echo", "screen", "-log", "none",
+                              "-in", "in.collision"],
+                             cwd=run_dir, stdout=out, stderr=subprocess.STDOUT)
+    tail = "".join(open(log, errors="replace").readlines()[-15:])
+    if rc != 0 or not os.path.exists(history):
+        raise DEMError("%s run failed (exit status %d), log %s:"
+                       % (code, rc, log), tail)
+    try:
+        return analyse(history, dt)
+    except DEMError as e:
+        raise DEMError("%s (%s)" % (e, run_dir), tail)
+
+
+def main():
+    p = argparse.ArgumentParser(
+        description="Coefficient of restitution and contact time of two "
+                    "identical spheres colliding head-on in LIGGGHTS or LAMMPS.")
+    p.add_argument("--code", required=True, choices=sorted(BINARY))
+    p.add_argument("--snippet", required=True,
+                   help="file with the contact-model lines (SI units)")
+    p.add_argument("--radius", type=float, required=True, help="R in m")
+    p.add_argument("--density", type=float, required=True, help="kg/m^3")
+    p.add_argument("--speeds", type=float, nargs="+", required=True,
+                   help="speed v of each sphere in m/s (relative speed 2v)")
+    p.add_argument("--work", help="directory for the runs (default: temporary)")
+    args = p.parse_args()
+    snippet = open(args.snippet).read()
+    try:
+        for v in args.speeds:
+            eps, tc = collide(args.code, snippet, args.radius, args.density, v,
+                              args.work)
+            print("speed %r epsilon %r contact_time %r" % (v, eps, tc),
+                  flush=True)
+    except DEMError as e:
+        print("dem_collision: error: %s" % e, file=sys.stderr)
+        if e.log_tail:
+            sys.stderr.write(e.log_tail)
+        sys.exit(1)
+
+
+if __name__ == "__main__":
+    main()
