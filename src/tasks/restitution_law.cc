@@ -21,6 +21,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <regex>
 #include <sstream>
 
 #ifndef DISKIMPACT_VERSION
@@ -249,8 +250,8 @@ namespace DiskImpact
       files["mercurydpm.txt"] =
         "// MercuryDPM, LinearViscoelasticSpecies (particle-wall; for two "
         "such particles use mass / 2)\n" +
-        std::string("// ") + head.str().substr(2) + "species.setDensity(" +
-        number(d.density) +
+        std::regex_replace(head.str(), std::regex("(^|\n)# "), "$1// ") +
+        "species.setDensity(" + number(d.density) +
         ");\nspecies.setCollisionTimeAndRestitutionCoefficient(" +
         number(d.contact_time) + ", " + number(d.epsilon) + ", " +
         number(d.mass) + ");\n";
