@@ -20,6 +20,7 @@ namespace DiskImpact
     UnitSystem::declare_parameters(prm);
     BodyGeometry::declare_parameters(prm);
     Material::declare_parameters(prm);
+    Partner::declare_parameters(prm);
     FiniteElementParameters::declare_parameters(prm);
     ModalSolver::declare_parameters(prm);
     ModalConvergenceStudy::declare_parameters(prm);
@@ -67,6 +68,7 @@ namespace DiskImpact
                 "constants (remove 'Plane model')");
         material.make_axisymmetric();
       }
+    partner.parse_parameters(prm, geometry, material);
     finite_element.parse_parameters(prm);
     modal_solver.parse_parameters(prm);
     modal_convergence.parse_parameters(prm);
@@ -124,8 +126,10 @@ namespace DiskImpact
     if (run.task == Task::reference_models)
       reference_models.check_velocities(
         impact.contact_law_constant_value(*this));
-    if (run.task == Task::impact || run.task == Task::impact_convergence ||
-        run.runs_sweep())
+    if (partner.is_body())
+      check_partner();
+    else if (run.task == Task::impact || run.task == Task::impact_convergence ||
+             run.runs_sweep())
       contact.check_wall(geometry, 0.05);
     if (run.task == Task::impact || run.task == Task::impact_convergence)
       time_integrator.check_time_step(
@@ -161,6 +165,38 @@ namespace DiskImpact
           in_list("Relaxation times",
                   [&]() { material.with_relaxation_time(tau); });
       }
+  }
+
+  void
+  Parameters::check_partner() const
+  {
+    require(run.task == Task::impact || run.task == Task::impact_convergence ||
+              run.task == Task::sweep,
+            "Partner: 'Kind = body' is computed by the tasks 'impact', "
+            "'impact convergence' and 'sweep' only");
+    require(!units.is_si(),
+            "Partner: 'Kind = body' takes dimensionless units (Units = "
+            "dimensionless)");
+    const RigidWall &wall = contact.wall();
+    require(wall.point.norm() == 0. && wall.normal[0] == 1. &&
+              wall.normal[1] == 0.,
+            "Contact: 'Wall point' and 'Wall normal' must keep their "
+            "defaults (0, 0) and (1, 0) with 'Kind = body' in subsection "
+            "Partner: the partner's place is set by its 'Gap'");
+    require(!geometry.has_mesh_file(),
+            "Geometry: a 'Mesh file' cannot be used with 'Kind = body' in "
+            "subsection Partner (both bodies use the built-in mesh)");
+    require(!time_integrator.redistribute_mass(),
+            "Time stepping: 'Contact mass = redistributed' is not available "
+            "with 'Kind = body' in subsection Partner");
+    require(impact.revolved_view() == 0.,
+            "Impact: 'Revolved view' is a single sphere's output: set it to "
+            "0 with 'Kind = body' in subsection Partner");
+    require(impact.poisson_ratios().empty() &&
+              impact.relaxation_times().empty(),
+            "Impact: 'Poisson ratios' and 'Relaxation times' change the "
+            "body's material only: give both bodies' materials in "
+            "subsections Material and Partner instead");
   }
 
   namespace

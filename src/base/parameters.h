@@ -3,6 +3,7 @@
 #include "base/run_parameters.h"
 #include "base/unit_system.h"
 #include "body/geometry.h"
+#include "body/partner.h"
 #include "contact/contact.h"
 #include "dynamics/time_integrator.h"
 #include "elasticity/elasticity_operator.h"
@@ -38,6 +39,7 @@ namespace DiskImpact
     UnitSystem              units;
     BodyGeometry            geometry;
     Material                material;
+    Partner                 partner;
     FiniteElementParameters finite_element;
     ModalSolver             modal_solver;
     ModalConvergenceStudy   modal_convergence;
@@ -54,6 +56,9 @@ namespace DiskImpact
     /// Everything but 'Task', 'Output directory' and 'Units'.
     void
     parse_physics(dealii::ParameterHandler &prm);
+    /// The limits of a deformable collision partner (subsection Partner).
+    void
+    check_partner() const;
   };
 
   /**

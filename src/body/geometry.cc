@@ -198,6 +198,12 @@ namespace DiskImpact
     n_global_refinements = n;
   }
 
+  bool
+  BodyGeometry::has_mesh_file() const
+  {
+    return !mesh_file.empty();
+  }
+
   std::string
   BodyGeometry::description() const
   {
@@ -216,6 +222,13 @@ namespace DiskImpact
                                      const double      max_cells) const
   {
     create_coarse_triangulation(triangulation);
+    refine(triangulation, max_cells);
+  }
+
+  void
+  BodyGeometry::refine(Triangulation<2> &triangulation,
+                       const double      max_cells) const
+  {
     // Each global refinement quadruples the cells, each contact refinement
     // adds about as many as the uniform mesh has.
     const double n_cells = triangulation.n_global_active_cells() *
@@ -230,6 +243,14 @@ namespace DiskImpact
               " this machine's memory holds");
     triangulation.refine_global(n_global_refinements);
     refine_toward_contact_point(triangulation);
+  }
+
+  BodyGeometry
+  BodyGeometry::with_radius(const double radius) const
+  {
+    BodyGeometry copy = *this;
+    copy.disk_radius  = radius;
+    return copy;
   }
 
   void

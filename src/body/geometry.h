@@ -22,10 +22,14 @@ namespace DiskImpact
   {
     constexpr dealii::types::boundary_id curved   = 1;
     constexpr dealii::types::boundary_id symmetry = 2;
+    /// The curved edge of a collision partner (class Partner).
+    constexpr dealii::types::boundary_id partner_curved = 3;
   } // namespace BoundaryIds
 
   /// Manifold id of the curved edge.
   constexpr dealii::types::manifold_id curved_manifold_id = 1;
+  /// Manifold id of a collision partner's curved edge.
+  constexpr dealii::types::manifold_id partner_manifold_id = 2;
 
   /// Call @p f(cell, face_number) for every face on the curved edge of the
   /// locally owned cells of @p dof_handler.
@@ -135,6 +139,21 @@ namespace DiskImpact
      */
     void
     create_coarse_triangulation(dealii::Triangulation<2> &triangulation) const;
+
+    /// The global refinements and the contact refinements toward the
+    /// origin of create_triangulation(), on a coarse mesh; throws an
+    /// InputError if they would exceed about @p max_cells cells.
+    void
+    refine(dealii::Triangulation<2> &triangulation,
+           double max_cells = std::numeric_limits<double>::infinity()) const;
+
+    /// The same geometry with radius @p radius (a collision partner's).
+    BodyGeometry
+    with_radius(double radius) const;
+
+    /// Whether the coarse mesh is read from 'Mesh file'.
+    bool
+    has_mesh_file() const;
 
     /// One line describing the mesh source and refinement.
     std::string

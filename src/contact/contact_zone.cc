@@ -3,6 +3,8 @@
 #include "base/input_error.h"
 #include "base/run_error.h"
 #include "body/geometry.h"
+#include "contact/constrained_row.h"
+#include "contact/partner_edge.h"
 #include "elasticity/elasticity_operator.h"
 
 #include <deal.II/base/mpi.h>
@@ -23,7 +25,8 @@ namespace DiskImpact
                            const RigidWall          &wall,
                            const WallLaw            &law,
                            const dealii::Point<2>   &disk_center,
-                           const double              gap_bound)
+                           const double              gap_bound,
+                           const bool                with_partner)
       : law(law)
       , bound(gap_bound)
       , axisymmetric(op.get_section().is_axisymmetric())
@@ -45,8 +48,8 @@ namespace DiskImpact
       disk_center - wall.gap(disk_center) * wall.normal;
     const Tensor<1, 2> along({-wall.normal[1], wall.normal[0]});
 
-    // This rank's candidates, flattened for the exchange: ds, g0, t, the
-    // number of entries, then (DoF, b) pairs.
+    // This rank's candidates, flattened for the exchange: ds, g0, t, x, y,
+    // the number of entries, then (DoF, b) pairs.
     std::vector<double> local;
     for_each_curved_edge_face(
       dof_handler, [&](const auto &cell, const unsigned int f) {
@@ -59,64 +62,84 @@ namespace DiskImpact
         cell->get_dof_indices(dof_indices);
         for (const unsigned int q : face_values.quadrature_point_indices())
           {
-            std::map<types::global_dof_index, double> row;
+            ConstrainedRow row;
             for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-              {
-                const double b =
-                  face_values[displacement].value(i, q) * wall.normal;
-                if (b == 0.)
-                  continue;
-                const auto *entries =
-                  constraints.get_constraint_entries(dof_indices[i]);
-                if (entries == nullptr)
-                  row[dof_indices[i]] += b;
-                else
-                  for (const auto &[j, weight] : *entries)
-                    row[j] += weight * b;
-              }
+              add_to_row(constraints,
+                         dof_indices[i],
+                         face_values[displacement].value(i, q) * wall.normal,
+                         row);
             local.insert(local.end(),
                          {face_values.JxW(q) *
                             op.get_section().measure(
                               face_values.quadrature_point(q)),
                           wall.gap(x[q]),
                           (x[q] - origin) * along,
+                          x[q][0],
+                          x[q][1],
                           static_cast<double>(row.size())});
             for (const auto &[dof, b] : row)
               local.insert(local.end(), {static_cast<double>(dof), b});
           }
       });
 
-    // Every rank holds every candidate, in rank order; D sorted.
-    const auto parts =
-      Utilities::MPI::all_gather(dof_handler.get_communicator(), local);
-    std::set<types::global_dof_index> all_dofs;
-    for (const auto &part : parts)
-      for (std::size_t k = 0; k < part.size();)
-        {
-          const auto n_entries = static_cast<std::size_t>(part[k + 3]);
-          for (std::size_t e = 0; e < n_entries; ++e)
-            all_dofs.insert(
-              static_cast<types::global_dof_index>(part[k + 4 + 2 * e]));
-          k += 4 + 2 * n_entries;
-        }
-    dofs.assign(all_dofs.begin(), all_dofs.end());
-    auto position_in_D = [&](const double dof) {
-      return static_cast<unsigned int>(
-        std::lower_bound(dofs.begin(),
-                         dofs.end(),
-                         static_cast<types::global_dof_index>(dof)) -
-        dofs.begin());
+    // Every rank holds every candidate, in rank order.
+    struct Candidate
+    {
+      double                                                  ds, gap0, t;
+      dealii::Point<2>                                        x;
+      std::vector<std::pair<types::global_dof_index, double>> row;
     };
-    for (const auto &part : parts)
+    std::vector<Candidate> candidates;
+    for (const auto &part :
+         Utilities::MPI::all_gather(dof_handler.get_communicator(), local))
       for (std::size_t k = 0; k < part.size();)
         {
-          Point      point{part[k], part[k + 1], part[k + 2], {}, {}};
-          const auto n_entries = static_cast<std::size_t>(part[k + 3]);
-          k += 4;
+          Candidate candidate{
+            part[k], part[k + 1], part[k + 2], {part[k + 3], part[k + 4]}, {}};
+          const auto n_entries = static_cast<std::size_t>(part[k + 5]);
+          k += 6;
           for (std::size_t e = 0; e < n_entries; ++e, k += 2)
-            point.row.emplace_back(position_in_D(part[k]), part[k + 1]);
-          points.push_back(std::move(point));
+            candidate.row.emplace_back(
+              static_cast<types::global_dof_index>(part[k]), part[k + 1]);
+          candidates.push_back(std::move(candidate));
         }
+    if (with_partner)
+      {
+        // The gap is measured to the partner's edge, whose normal
+        // displacement enters with the opposite sign; points that face no
+        // part of it, or face it from beyond the bound, drop out.
+        std::vector<dealii::Point<2>> x;
+        for (const auto &candidate : candidates)
+          x.push_back(candidate.x);
+        const auto             partner = locate_on_partner_edge(op, wall, x);
+        std::vector<Candidate> paired;
+        for (unsigned int k = 0; k < candidates.size(); ++k)
+          if (partner[k] && partner[k]->gap0 < gap_bound)
+            {
+              Candidate candidate = std::move(candidates[k]);
+              candidate.gap0      = partner[k]->gap0;
+              candidate.row.insert(candidate.row.end(),
+                                   partner[k]->row.begin(),
+                                   partner[k]->row.end());
+              paired.push_back(std::move(candidate));
+            }
+        candidates = std::move(paired);
+      }
+
+    // D sorted; each point's row in positions of D.
+    std::set<types::global_dof_index> all_dofs;
+    for (const auto &candidate : candidates)
+      for (const auto &entry : candidate.row)
+        all_dofs.insert(entry.first);
+    dofs.assign(all_dofs.begin(), all_dofs.end());
+    for (const auto &candidate : candidates)
+      {
+        Point point{candidate.ds, candidate.gap0, candidate.t, {}, {}};
+        for (const auto &[dof, b] : candidate.row)
+          point.row.emplace_back(
+            std::lower_bound(dofs.begin(), dofs.end(), dof) - dofs.begin(), b);
+        points.push_back(std::move(point));
+      }
     active_position.assign(dofs.size(), -1);
   }
 

@@ -38,12 +38,15 @@ namespace DiskImpact
   {
   public:
     /// The candidates: points of edge faces with undeformed gap below
-    /// @p gap_bound. Collective.
+    /// @p gap_bound. With @p with_partner the gap is measured along the
+    /// wall normal to a collision partner's edge (locate_on_partner_edge()),
+    /// and the rows hold both bodies' DoFs. Collective.
     ContactZone(const ElasticityOperator &op,
                 const RigidWall          &wall,
                 const WallLaw            &law,
                 const dealii::Point<2>   &disk_center,
-                double                    gap_bound);
+                double                    gap_bound,
+                bool                      with_partner = false);
 
     /// D, the candidates' DoFs.
     const std::vector<dealii::types::global_dof_index> &

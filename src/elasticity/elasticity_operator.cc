@@ -16,6 +16,7 @@
 
 #include <deal.II/numerics/vector_tools.h>
 
+#include <algorithm>
 #include <limits>
 
 namespace DiskImpact
@@ -189,6 +190,13 @@ namespace DiskImpact
   void
   ElasticityOperator::assemble(const Material &material)
   {
+    assemble(std::vector<Material>{material});
+  }
+
+  void
+  ElasticityOperator::assemble(const std::vector<Material> &materials)
+  {
+    Assert(!materials.empty(), ExcInternalError());
     const QGauss<2>    quadrature(fe_degree + 1);
     FEValues<2>        fe_values(*mapping,
                           *fe,
@@ -202,23 +210,22 @@ namespace DiskImpact
     std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
     const FEValuesExtractors::Vector     displacement(0);
 
-    const SymmetricTensor<4, 2> c   = material.stiffness_tensor();
-    const SymmetricTensor<4, 2> d   = material.damping_tensor();
-    const double                rho = material.density();
     // Axisymmetric: the hoop strain h adds lambda (tr eps h' + h tr eps')
     // + (lambda + 2 mu) h h' to eps : C : eps' (and tau times that to the
     // Kelvin-Voigt form; the constants are 3D, as in plane strain).
-    const double lambda      = material.lame_lambda();
-    const double mu          = material.shear_modulus();
-    const double tau         = material.relaxation_time();
-    auto         hoop_energy = [&](const double tr_i,
-                           const double h_i,
-                           const double tr_j,
-                           const double h_j) {
-      return lambda * (tr_i * h_j + h_i * tr_j) +
-             (lambda + 2. * mu) * h_i * h_j;
+    auto hoop_energy = [](const Material &material,
+                          const double    tr_i,
+                          const double    h_i,
+                          const double    tr_j,
+                          const double    h_j) {
+      return material.lame_lambda() * (tr_i * h_j + h_i * tr_j) +
+             (material.lame_lambda() + 2. * material.shear_modulus()) * h_i *
+               h_j;
     };
-    with_damping = material.is_viscous();
+    with_damping =
+      std::any_of(materials.begin(), materials.end(), [](const Material &m) {
+        return m.is_viscous();
+      });
     if (with_damping)
       {
         damping.reinit(stiffness);
@@ -234,6 +241,17 @@ namespace DiskImpact
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
+          // One material for every cell (a mesh file's cells carry its
+          // physical tags as material ids), or each body's: material id 0,
+          // or 1 for a collision partner.
+          const unsigned int which =
+            materials.size() == 1 ? 0 : cell->material_id();
+          AssertIndexRange(which, materials.size());
+          const Material             &material = materials[which];
+          const SymmetricTensor<4, 2> c        = material.stiffness_tensor();
+          const SymmetricTensor<4, 2> d        = material.damping_tensor();
+          const double                rho      = material.density();
+          const double                tau      = material.relaxation_time();
           fe_values.reinit(cell);
           cell_mass      = 0.;
           cell_stiffness = 0.;
@@ -255,10 +273,13 @@ namespace DiskImpact
                   const SymmetricTensor<2, 2> d_eps_i = d * eps[i];
                   for (unsigned int j = 0; j < dofs_per_cell; ++j)
                     {
-                      const double h_ij =
-                        section.is_axisymmetric() ?
-                          hoop_energy(trace[i], hoop[i], trace[j], hoop[j]) :
-                          0.;
+                      const double h_ij = section.is_axisymmetric() ?
+                                            hoop_energy(material,
+                                                        trace[i],
+                                                        hoop[i],
+                                                        trace[j],
+                                                        hoop[j]) :
+                                            0.;
                       cell_mass(i, j) += rho * (phi[i] * phi[j]) * dx;
                       cell_stiffness(i, j) += (c_eps_i * eps[j] + h_ij) * dx;
                       cell_damping(i, j) +=

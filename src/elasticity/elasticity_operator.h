@@ -19,6 +19,7 @@
 #include <deal.II/lac/petsc_vector.h>
 
 #include <memory>
+#include <vector>
 
 namespace DiskImpact
 {
@@ -78,6 +79,10 @@ namespace DiskImpact
     /// axisymmetric body.
     void
     assemble(const Material &material);
+    /// The same with the material of each cell: materials[material_id]
+    /// (a collision partner's cells have material id 1).
+    void
+    assemble(const std::vector<Material> &materials);
     /// Whether assemble() built a damping matrix.
     bool
     has_damping() const;

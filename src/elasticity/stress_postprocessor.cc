@@ -81,11 +81,34 @@ namespace DiskImpact
     return full;
   }
 
+  std::vector<SectionStressModel>
+  section_stress_models(const std::vector<Material> &materials)
+  {
+    return {materials.begin(), materials.end()};
+  }
+
+  const SectionStressModel &
+  section_stress_model_of(const std::vector<SectionStressModel>    &models,
+                          const DataPostprocessorInputs::Vector<2> &inputs)
+  {
+    if (models.size() == 1)
+      return models[0];
+    const auto cell = inputs.template get_cell<2>();
+    AssertIndexRange(cell->material_id(), models.size());
+    return models[cell->material_id()];
+  }
+
   StressPostprocessor::StressPostprocessor(const Material &material)
+      : StressPostprocessor(std::vector<Material>{material})
+  {
+  }
+
+  StressPostprocessor::StressPostprocessor(
+    const std::vector<Material> &materials)
       : DataPostprocessorTensor<2>(
           "stress",
-          SectionStressModel(material).needed_update_flags())
-      , model(material)
+          SectionStressModel(materials.at(0)).needed_update_flags())
+      , models(section_stress_models(materials))
   {
   }
 
@@ -96,7 +119,8 @@ namespace DiskImpact
   {
     for (unsigned int q = 0; q < inputs.solution_gradients.size(); ++q)
       {
-        const SymmetricTensor<2, 2> stress = model.evaluate(inputs, q).in_plane;
+        const SymmetricTensor<2, 2> stress =
+          section_stress_model_of(models, inputs).evaluate(inputs, q).in_plane;
         for (unsigned int i = 0; i < 2; ++i)
           for (unsigned int j = 0; j < 2; ++j)
             computed_quantities[q][Tensor<2, 2>::component_to_unrolled_index(
@@ -106,7 +130,13 @@ namespace DiskImpact
 
   StressScalarsPostprocessor::StressScalarsPostprocessor(
     const Material &material)
-      : model(material)
+      : StressScalarsPostprocessor(std::vector<Material>{material})
+  {
+  }
+
+  StressScalarsPostprocessor::StressScalarsPostprocessor(
+    const std::vector<Material> &materials)
+      : models(section_stress_models(materials))
   {
   }
 
@@ -117,9 +147,10 @@ namespace DiskImpact
   {
     for (unsigned int q = 0; q < inputs.solution_gradients.size(); ++q)
       {
-        const SectionStress          section = model.evaluate(inputs, q);
-        const SymmetricTensor<2, 2> &stress  = section.in_plane;
-        const SymmetricTensor<2, 3>  full    = section.three_dimensional();
+        const SectionStress section =
+          section_stress_model_of(models, inputs).evaluate(inputs, q);
+        const SymmetricTensor<2, 2> &stress = section.in_plane;
+        const SymmetricTensor<2, 3>  full   = section.three_dimensional();
         // Mohr's circle: centre and radius. deal.II's eigenvalues() goes
         // through tr^2 - 4 det, which loses half the digits of sigma_1 -
         // sigma_2 when the two are close (its documented warning).
@@ -130,7 +161,7 @@ namespace DiskImpact
         computed_quantities[q][1] = centre + radius;
         computed_quantities[q][2] = centre - radius;
         computed_quantities[q][3] = -trace(full) / 3.;
-        if (model.is_axisymmetric())
+        if (models[0].is_axisymmetric())
           computed_quantities[q][4] = section.out_of_plane;
       }
   }
@@ -142,7 +173,7 @@ namespace DiskImpact
                                       "principal_stress_1",
                                       "principal_stress_2",
                                       "pressure"};
-    if (model.is_axisymmetric())
+    if (models[0].is_axisymmetric())
       names.emplace_back("hoop_stress");
     return names;
   }
@@ -158,6 +189,6 @@ namespace DiskImpact
   UpdateFlags
   StressScalarsPostprocessor::get_needed_update_flags() const
   {
-    return model.needed_update_flags();
+    return models[0].needed_update_flags();
   }
 } // namespace DiskImpact

@@ -57,6 +57,14 @@ namespace DiskImpact
     double out_of_plane_ratio;
   };
 
+  /// The model of each material, and the one of the cell @p inputs are on.
+  std::vector<SectionStressModel>
+  section_stress_models(const std::vector<Material> &materials);
+  const SectionStressModel &
+  section_stress_model_of(
+    const std::vector<SectionStressModel>            &models,
+    const dealii::DataPostprocessorInputs::Vector<2> &inputs);
+
   /// The Cauchy stress sigma = C : eps(u) of a displacement field, as a
   /// tensor field "stress" for ParaView (the meridian's components on a
   /// sphere).
@@ -64,6 +72,8 @@ namespace DiskImpact
   {
   public:
     explicit StressPostprocessor(const Material &material);
+    /// Cells with material id i take @p materials[i] (two bodies).
+    explicit StressPostprocessor(const std::vector<Material> &materials);
 
     void
     evaluate_vector_field(
@@ -71,7 +81,7 @@ namespace DiskImpact
       std::vector<dealii::Vector<double>> &computed_quantities) const override;
 
   private:
-    SectionStressModel model;
+    std::vector<SectionStressModel> models;
   };
 
   /**
@@ -96,6 +106,8 @@ namespace DiskImpact
   {
   public:
     explicit StressScalarsPostprocessor(const Material &material);
+    /// Cells with material id i take @p materials[i] (two bodies).
+    explicit StressScalarsPostprocessor(const std::vector<Material> &materials);
 
     void
     evaluate_vector_field(
@@ -113,6 +125,6 @@ namespace DiskImpact
     get_needed_update_flags() const override;
 
   private:
-    SectionStressModel model;
+    std::vector<SectionStressModel> models;
   };
 } // namespace DiskImpact

@@ -28,7 +28,7 @@ namespace DiskImpact
     struct StatePatches
     {
       StatePatches(const ElasticityOperator         &op,
-                   const Material                   &material,
+                   const std::vector<Material>      &material,
                    const PETScWrappers::MPI::Vector &ghosted_u)
           : stress(material)
           , stress_scalars(material)
@@ -64,7 +64,7 @@ namespace DiskImpact
 
   std::string
   write_deformed_state(const ElasticityOperator         &op,
-                       const Material                   &material,
+                       const std::vector<Material>      &material,
                        const PETScWrappers::MPI::Vector &ghosted_u,
                        const std::string                &directory,
                        const std::string                &basename,
@@ -82,7 +82,7 @@ namespace DiskImpact
 
   std::pair<std::string, std::string>
   write_deformed_and_revolved_state(const ElasticityOperator         &op,
-                                    const Material                   &material,
+                                    const std::vector<Material>      &material,
                                     const PETScWrappers::MPI::Vector &ghosted_u,
                                     const Point<2>                   &centre,
                                     const double                      radius,

@@ -6,11 +6,14 @@
 
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace DiskImpact
 {
   class ElasticityOperator;
   class Material;
+
+  // The materials: materials[i] on the cells of material id i.
 
   /**
    * Write a displacement field, its stress tensor and the scalar stress
@@ -21,7 +24,7 @@ namespace DiskImpact
    */
   std::string
   write_deformed_state(const ElasticityOperator                 &op,
-                       const Material                           &material,
+                       const std::vector<Material>              &materials,
                        const dealii::PETScWrappers::MPI::Vector &ghosted_u,
                        const std::string                        &directory,
                        const std::string                        &basename,
@@ -38,7 +41,7 @@ namespace DiskImpact
   std::pair<std::string, std::string>
   write_deformed_and_revolved_state(
     const ElasticityOperator                 &op,
-    const Material                           &material,
+    const std::vector<Material>              &materials,
     const dealii::PETScWrappers::MPI::Vector &ghosted_u,
     const dealii::Point<2>                   &centre,
     double                                    radius,

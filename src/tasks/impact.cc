@@ -7,6 +7,7 @@
 #include "output/csv_table.h"
 #include "reference/hertz_impact.h"
 #include "reference/log_contact_law.h"
+#include "reference/two_body_contact.h"
 #include "reference/viscoelastic_spheres.h"
 #include "reference/wall_contact_theory.h"
 #include "tasks/impact_simulation.h"
@@ -245,6 +246,8 @@ namespace DiskImpact
     const auto   theory =
       Reference::wall_contact_theory(parameters.geometry.is_axisymmetric());
     CollisionEstimate estimate;
+    if (parameters.partner.is_body())
+      return estimate_pair_collision(parameters);
     try
       {
         const auto one_dof    = theory->elastic_impact(mass, v0, E2, R, C);
@@ -288,6 +291,84 @@ namespace DiskImpact
         estimate.largest_load        = delta / (R * std::log(4. * R / delta));
       }
     return estimate;
+  }
+
+  CollisionEstimate
+  Impact::estimate_pair_collision(const Parameters &parameters) const
+  {
+    // The relative motion of two bodies: the reduced mass on the pair's
+    // law (docs/two-bodies.md), with each body's own constant.
+    const bool   sphere  = parameters.geometry.is_axisymmetric();
+    const auto  &partner = parameters.partner;
+    const double R       = parameters.geometry.radius();
+    const double c       = parameters.material.velocity_unit();
+    const double v0      = impact_velocity * c;
+    const double m1 =
+      parameters.material.density() * parameters.geometry.volume();
+    const double m2           = partner.mass();
+    Parameters   partner_only = parameters;
+    partner_only.material     = partner.material();
+    partner_only.geometry = parameters.geometry.with_radius(partner.radius());
+    const Reference::ContactBody body{
+      R,
+      parameters.material.in_plane_young_modulus(),
+      contact_law_constant_value(parameters)};
+    const Reference::ContactBody other{
+      partner.radius(),
+      partner.material().in_plane_young_modulus(),
+      contact_law_constant_value(partner_only)};
+    const auto one_dof = Reference::two_body_elastic_impact(
+      sphere, m1 * m2 / (m1 + m2), v0, body, other);
+    CollisionEstimate estimate;
+    estimate.contact_time        = one_dof.contact_time;
+    estimate.largest_compression = one_dof.max_compression;
+    // The load of the body alone on a wall whose Hertz zone has the pair's
+    // half-width a: a^2 = 4 P R* / (pi E*) (disks), a^3 = 3 P R* / (4 E*)
+    // (spheres), 1/R* = 1/R + 1/R2, 1/E* = 1/E2 + 1/E2'.
+    const double R_pair = R * partner.radius() / (R + partner.radius());
+    const double E_pair = contact_modulus(parameters);
+    const double P      = one_dof.max_force;
+    const double a      = sphere ? std::cbrt(0.75 * P * R_pair / E_pair) :
+                                   std::sqrt(4. * P * R_pair / (M_PI * E_pair));
+    estimate.largest_load =
+      sphere ? 4. * std::pow(a / R, 3) / (3. * M_PI) : a * a / (4. * R * R);
+    estimate.one_dof_contact_time = one_dof.contact_time * c / R;
+    estimate.one_dof_delta_max    = one_dof.max_compression / R;
+    // Kelvin-Voigt with one relaxation time: the relative motion obeys
+    // mu delta'' + F + tau delta' F' = 0 (each body's viscous force is tau
+    // times the rate of its elastic force).
+    const double tau = parameters.material.relaxation_time();
+    if (tau > 0. || partner.material().relaxation_time() > 0.)
+      {
+        estimate.one_dof_epsilon         = std::nan("");
+        estimate.one_dof_epsilon_overlap = std::nan("");
+        if (tau == partner.material().relaxation_time())
+          {
+            const auto law = Reference::two_body_force_law(sphere, body, other);
+            const double mu      = m1 * m2 / (m1 + m2);
+            const auto   viscous = Reference::collide(
+              mu, v0, law, tau, Reference::EndCriterion::force);
+            estimate.one_dof_epsilon = viscous.epsilon;
+            estimate.one_dof_epsilon_overlap =
+              Reference::collide(
+                mu, v0, law, tau, Reference::EndCriterion::overlap)
+                .epsilon;
+            estimate.one_dof_contact_time = viscous.contact_time * c / R;
+            estimate.one_dof_delta_max    = viscous.max_overlap / R;
+          }
+      }
+    return estimate;
+  }
+
+  double
+  Impact::contact_modulus(const Parameters &parameters)
+  {
+    const double E2 = parameters.material.in_plane_young_modulus();
+    if (!parameters.partner.is_body())
+      return E2;
+    const double E2_partner =
+      parameters.partner.material().in_plane_young_modulus();
+    return 1. / (1. / E2 + 1. / E2_partner);
   }
 
   double
@@ -343,7 +424,12 @@ namespace DiskImpact
                       const double      max_cells) const
   {
     const auto &geometry = parameters.geometry;
-    geometry.create_triangulation(triangulation, max_cells);
+    if (parameters.partner.is_body())
+      parameters.partner.create_pair_triangulation(geometry,
+                                                   triangulation,
+                                                   max_cells);
+    else
+      geometry.create_triangulation(triangulation, max_cells);
     refine_toward_contact(triangulation,
                           geometry.contact_point(),
                           largest_half_width(parameters),
@@ -387,7 +473,10 @@ namespace DiskImpact
                     "one_dof_delta_max",
                     "alpha",
                     "one_dof_epsilon",
-                    "one_dof_epsilon_overlap"});
+                    "one_dof_epsilon_overlap",
+                    "vibration_fraction",
+                    "partner_vibration_fraction",
+                    "momentum_error"});
     table.start_row();
     for (const double value : {s.velocity,
                                s.epsilon,
@@ -408,6 +497,9 @@ namespace DiskImpact
     table.add(s.schwager_alpha);
     table.add(s.one_dof_epsilon);
     table.add(s.one_dof_epsilon_overlap);
+    table.add(s.vibration_fraction);
+    table.add(s.partner_vibration_fraction);
+    table.add(s.momentum_error);
     return table;
   }
 } // namespace DiskImpact

@@ -6,6 +6,7 @@
 
 #include <mpi.h>
 
+#include <cmath>
 #include <limits>
 #include <string>
 #include <vector>
@@ -40,6 +41,12 @@ namespace DiskImpact
     double       one_dof_delta_max    = 0.; ///< 1-DOF log law, / R
     double       one_dof_epsilon      = 1.; ///< 1-DOF law with viscosity
     double one_dof_epsilon_overlap    = 1.; ///< the same, ended at zero overlap
+    /// The energy left in the body's vibration / E(0); with a partner
+    /// also the partner's, and |m1 v1 + m2 v2| / (m* v_i) at the end (NaN
+    /// for a wall), m* = m1 m2 / (m1 + m2).
+    double vibration_fraction         = std::nan("");
+    double partner_vibration_fraction = std::nan("");
+    double momentum_error             = std::nan("");
   };
 
   /// What the 1-DOF log-law model expects of a collision: the basis of the
@@ -99,6 +106,9 @@ namespace DiskImpact
     /// range: seed 001's eq. 61 for the contact time and load).
     CollisionEstimate
     estimate_collision(const Parameters &parameters) const;
+    /// estimate_collision() of two bodies (subsection Partner).
+    CollisionEstimate
+    estimate_pair_collision(const Parameters &parameters) const;
     /// The Hertz half-width at the largest expected force [length]: the
     /// contact zone the mesh is graded for.
     double
@@ -110,6 +120,11 @@ namespace DiskImpact
       const Parameters         &parameters,
       dealii::Triangulation<2> &triangulation,
       double max_cells = std::numeric_limits<double>::infinity()) const;
+
+    /// The modulus of the contact: the body's E2 against the wall; against
+    /// a deformable partner the pair's, 1 / (1 / E2 + 1 / E2').
+    static double
+    contact_modulus(const Parameters &parameters);
 
     /// The constant of the 1-DOF model's wall law: a disk's C, a sphere's D.
     double

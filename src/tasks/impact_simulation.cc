@@ -178,15 +178,18 @@ namespace DiskImpact
     const double largest_half_width = impact.largest_half_width(parameters);
     impact.create_mesh(parameters, triangulation);
     op.setup(triangulation, geometry, true);
+    const bool pair = parameters.partner.is_body();
     // No inertia on the edge within the uniformly refined contact zone.
     if (parameters.time_integrator.redistribute_mass())
       op.set_massless_edge_zone(geometry.contact_point(),
                                 1.5 * largest_half_width);
-    op.assemble(material);
+    op.assemble(
+      pair ? std::vector<Material>{material, parameters.partner.material()} :
+             std::vector<Material>{material});
     summary.massless_dofs = op.n_massless_dofs();
     summary.n_dofs        = op.get_dof_handler().n_dofs();
     // The modes to project on, of the operator the time stepping uses.
-    if (with_outputs && impact.projected_modes > 0)
+    if (with_outputs && impact.projected_modes > 0 && !pair)
       projection = std::make_unique<ModalProjection>(
         op,
         geometry,
@@ -196,9 +199,12 @@ namespace DiskImpact
     // below the law's reach plus three times the largest approach the
     // 1-DOF model expects (or the Hertz zone's own gap a^2 / 2R, if
     // larger).
-    const auto    estimate = impact.estimate_collision(parameters);
+    const auto estimate = impact.estimate_collision(parameters);
+    // Two bodies: the penalty k = kappa E / h with the pair's modulus
+    // 1 / E = 1 / E2 + 1 / E2' (the wall's with identical bodies, whose gap
+    // is twice the wall's).
     const WallLaw law =
-      parameters.contact.wall_law(E2,
+      parameters.contact.wall_law(impact.contact_modulus(parameters),
                                   ContactOperator::smallest_edge_face(op),
                                   R);
     const double bound =
@@ -206,7 +212,10 @@ namespace DiskImpact
       3. * std::max(estimate.largest_compression,
                     largest_half_width * largest_half_width / (2. * R));
     zone = std::make_unique<ContactZone>(
-      op, parameters.contact.wall(), law, geometry.center(), bound);
+      op, parameters.contact.wall(), law, geometry.center(), bound, pair);
+    if (pair)
+      bodies =
+        std::make_unique<BodyMotion>(op, parameters.contact.wall().normal, 2);
   }
 
   void
@@ -224,7 +233,15 @@ namespace DiskImpact
                                std::vector<double>{normal[0], normal[1]}),
                              along_normal);
     op.get_constraints().distribute(along_normal);
-    v.add(-v0, along_normal);
+    if (bodies)
+      {
+        // The centre-of-mass frame: v1 m1 = v2 m2, v1 + v2 = v_i.
+        const double m1 = bodies->mass(0), m2 = bodies->mass(1);
+        v.add(-v0 * m2 / (m1 + m2), bodies->normal_field(0));
+        v.add(v0 * m1 / (m1 + m2), bodies->normal_field(1));
+      }
+    else
+      v.add(-v0, along_normal);
     // The centre of mass's motion along the wall normal is the momentum
     // (M x) . n over the mass n . M n (valid for a redistributed mass too).
     normal_momentum = op.mass_functional(along_normal);
@@ -249,7 +266,30 @@ namespace DiskImpact
   double
   ImpactSimulation::mean_along_normal(const PETScWrappers::MPI::Vector &x) const
   {
+    // Two bodies: the body's centre of mass relative to the partner's.
+    if (bodies)
+      return bodies->center_of_mass(0, x) - bodies->center_of_mass(1, x);
     return (normal_momentum * x) / normal_mass;
+  }
+
+  std::vector<Material>
+  ImpactSimulation::materials() const
+  {
+    if (bodies)
+      return {parameters.material, parameters.partner.material()};
+    return {parameters.material};
+  }
+
+  double
+  ImpactSimulation::translational_energy(const double v_com) const
+  {
+    if (!bodies)
+      return 0.5 * mass * v_com * v_com;
+    double energy = 0.;
+    for (unsigned int body = 0; body < 2; ++body)
+      energy += 0.5 * factor * bodies->mass(body) *
+                std::pow(bodies->center_of_mass(body, v), 2);
+    return energy;
   }
 
   void
@@ -406,7 +446,7 @@ namespace DiskImpact
                                force,
                                step.half_width() / R,
                                kinetic,
-                               0.5 * mass * v_com * v_com,
+                               translational_energy(v_com),
                                strain,
                                factor * step.energy,
                                dissipated,
@@ -459,7 +499,7 @@ namespace DiskImpact
       {
         const auto [flat, revolved] =
           write_deformed_and_revolved_state(op,
-                                            parameters.material,
+                                            {parameters.material},
                                             ghosted_u,
                                             parameters.geometry.center(),
                                             R,
@@ -471,13 +511,10 @@ namespace DiskImpact
         revolved_snapshots.emplace_back(time, revolved);
       }
     else
-      snapshots.emplace_back(time,
-                             write_deformed_state(op,
-                                                  parameters.material,
-                                                  ghosted_u,
-                                                  directory,
-                                                  "impact",
-                                                  snapshots.size()));
+      snapshots.emplace_back(
+        time,
+        write_deformed_state(
+          op, materials(), ghosted_u, directory, "impact", snapshots.size()));
   }
 
   void
@@ -491,6 +528,15 @@ namespace DiskImpact
     summary.impulse_error =
       std::abs(body_mass * (v_com_final - v_com_initial) - impulse) /
       (body_mass * v0);
+    // The energy left in the body's vibration: all but its centre of
+    // mass's kinetic energy.
+    summary.vibration_fraction =
+      (factor * (quadratic_form(op.mass_matrix(), v) +
+                 quadratic_form(op.stiffness_matrix(), u)) -
+       0.5 * body_mass * v_com_final * v_com_final) /
+      energy_initial;
+    if (bodies)
+      finish_pair();
     summary.factorizations = factorizations_before + solver->n_factorizations();
     summary.triangular_solves = solves_before + solver->n_triangular_solves();
     summary.time_step         = dt * c / R;
@@ -498,6 +544,40 @@ namespace DiskImpact
       (solve_time_before + solver->triangular_solve_time()) /
       summary.triangular_solves;
     summary.contact_dofs = solver->n_contact_dofs();
+  }
+
+  void
+  ImpactSimulation::finish_pair()
+  {
+    // Each body's momentum change against the contact impulse (equal and
+    // opposite on the two), relative to the reduced mass's m v_i; and the
+    // energy left in each body's vibration: its energy less its centre of
+    // mass's kinetic energy.
+    const double m1      = factor * bodies->mass(0);
+    const double m2      = factor * bodies->mass(1);
+    const double reduced = m1 * m2 / (m1 + m2);
+    double       error   = 0.;
+    for (unsigned int body = 0; body < 2; ++body)
+      {
+        const double m = body == 0 ? m1 : m2;
+        const double v_start =
+          body == 0 ? -v0 * m2 / (m1 + m2) : v0 * m1 / (m1 + m2);
+        const double v_end = bodies->center_of_mass(body, v);
+        error              = std::max(error,
+                         std::abs(m * (v_end - v_start) -
+                                  (body == 0 ? impulse : -impulse)));
+        const double vibration =
+          factor * (bodies->quadratic_form(body, op.mass_matrix(), v) +
+                    bodies->quadratic_form(body, op.stiffness_matrix(), u)) -
+          0.5 * m * v_end * v_end;
+        (body == 0 ? summary.vibration_fraction :
+                     summary.partner_vibration_fraction) =
+          vibration / energy_initial;
+      }
+    summary.impulse_error  = error / (reduced * v0);
+    summary.momentum_error = std::abs(m1 * bodies->center_of_mass(0, v) +
+                                      m2 * bodies->center_of_mass(1, v)) /
+                             (reduced * v0);
   }
 
   void

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "body/body_motion.h"
 #include "contact/contact_operator.h"
 #include "contact/contact_zone.h"
 #include "dynamics/condensed_solver.h"
@@ -71,6 +72,9 @@ namespace DiskImpact
     /// Fill the summary's results after the last step.
     void
     finish();
+    /// Two bodies: each one's momentum balance and vibration energy.
+    void
+    finish_pair();
     /// Throw a RunError if the result cannot be right: epsilon outside
     /// [0, 1], the energy balance of an energy-conserving scheme beyond its
     /// tolerance, contact time or delta_max beyond a factor 2 of the 1-DOF
@@ -87,6 +91,13 @@ namespace DiskImpact
     /// The centre-of-mass component of x along the wall normal.
     double
     mean_along_normal(const dealii::PETScWrappers::MPI::Vector &x) const;
+    /// The kinetic energy of the centre of mass (of each body) at the
+    /// velocity v, whose relative centre-of-mass velocity is @p v_com.
+    double
+    translational_energy(double v_com) const;
+    /// Each body's material, by material id.
+    std::vector<Material>
+    materials() const;
 
     const Parameters &parameters;
     const Impact     &impact;
@@ -103,8 +114,10 @@ namespace DiskImpact
     dealii::parallel::distributed::Triangulation<2> triangulation;
     ElasticityOperator                              op;
     std::unique_ptr<ContactZone>                    zone;
-    std::unique_ptr<ModalProjection>                projection;
-    std::unique_ptr<CondensedSolver>                solver;
+    /// Two bodies (a deformable partner): their centre-of-mass motion.
+    std::unique_ptr<BodyMotion>      bodies;
+    std::unique_ptr<ModalProjection> projection;
+    std::unique_ptr<CondensedSolver> solver;
 
     dealii::PETScWrappers::MPI::Vector u, v, a, u_new, v_new, a_new,
       along_normal, normal_momentum, b, y;

@@ -54,6 +54,14 @@ namespace DiskImpact
         << " solves with the factorized matrix (one: "
         << s.triangular_solve_time * 1e3 << " ms); " << s.contact_dofs
         << " contact DoFs condensed\n";
+    out << "  energy left in vibration: " << s.vibration_fraction << " of E(0)";
+    if (parameters.partner.is_body())
+      out << " (body), " << s.partner_vibration_fraction
+          << " (partner); momentum error " << s.momentum_error
+          << "\n  two bodies: v is the relative speed, epsilon = -(v1' - "
+             "v2') / (v1 - v2), delta_max the approach of the centres of "
+             "mass";
+    out << "\n";
     const UnitSystem &units = parameters.units;
     if (units.is_si())
       out << "  in SI: v = " << parameters.impact.velocity() * units.speed()

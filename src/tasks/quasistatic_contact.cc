@@ -265,7 +265,7 @@ namespace DiskImpact
                                 const unsigned int index) const
     {
       return write_deformed_state(op,
-                                  parameters.material,
+                                  {parameters.material},
                                   op.create_ghosted(solution),
                                   directory,
                                   "contact",

@@ -376,8 +376,8 @@ namespace DiskImpact
   ReferenceModels::tabulate_rayleigh(const Parameters  &parameters,
                                      const std::string &filename) const
   {
-    const double       nu2 = parameters.material.in_plane_poisson_ratio();
-    const double       C   = parameters.impact.contact_law_constant_value(parameters);
+    const double nu2 = parameters.material.in_plane_poisson_ratio();
+    const double C   = parameters.impact.contact_law_constant_value(parameters);
     const unsigned int largest =
       *std::max_element(mode_counts.begin(), mode_counts.end());
     std::cout << "Rayleigh: vibration left by the collision, log law with C = "

@@ -5,6 +5,7 @@
 #include "output/csv_table.h"
 #include "output/file_lock.h"
 #include "output/hdf5_output.h"
+#include "tasks/impact.h"
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
@@ -173,12 +174,14 @@ namespace DiskImpact
     public:
       SweepTable(const std::string &directory,
                  std::vector<Point> points,
-                 const std::string &parameters_json)
+                 const std::string &parameters_json,
+                 const std::string &units)
           : csv_file(directory + "/restitution.csv")
           , h5_file(directory + "/restitution.h5")
           , lock_file(directory + "/.restitution.lock")
           , points(std::move(points))
           , parameters_json(parameters_json)
+          , units(units)
       {
       }
 
@@ -262,9 +265,9 @@ namespace DiskImpact
                          n_done() == points.size() ? 1. : 0.);
         h5.set_attribute("/",
                          "units",
-                         "velocity in c = sqrt(E2/rho), contact_time in R/c, "
-                         "delta_max in R, force_max in E2 R, relaxation_time "
-                         "in R/c, wall_time in s; the rest dimensionless");
+                         units +
+                           "; relaxation_time in the parameter file's time "
+                           "unit, wall_time in s; the rest dimensionless");
         h5.set_attribute("/", "parameters", parameters_json);
         h5.finish();
       }
@@ -298,6 +301,8 @@ namespace DiskImpact
       const std::string  csv_file, h5_file, lock_file;
       std::vector<Point> points;
       const std::string  parameters_json;
+      /// The HDF5 root attribute 'units'.
+      const std::string units;
     };
 
     /// The index of the next pending point to run, shared by all ranks: an
@@ -450,7 +455,8 @@ namespace DiskImpact
     const unsigned int rank = Utilities::MPI::this_mpi_process(communicator);
     SweepTable         table(parameters.run.output_directory,
                      sweep_points(parameters),
-                     parameters.run.parameters_json);
+                     parameters.run.parameters_json,
+                     Impact::units(parameters));
     // Every rank reads the kept rows: all must agree on the pending points.
     collectively(communicator, [&]() {
       if (resume)

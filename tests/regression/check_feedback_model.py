@@ -25,7 +25,7 @@ p.add_argument("--delta-max", type=float, default=1e-3)
 p.add_argument("--epsilon", type=float, default=1e-3)
 a = p.parse_args()
 fe = {k: float(v) for k, v in
-      next(csv.DictReader(open(a.summary, newline=""))).items()}
+      next(csv.DictReader(open(a.summary, newline=""))).items() if v != ""}
 rows = [{k: float(v) for k, v in r.items()}
         for r in csv.DictReader(open(a.reference, newline=""))]
 rows = [r for r in rows if abs(r["velocity"] / fe["velocity"] - 1) < 1e-12
