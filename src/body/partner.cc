@@ -152,18 +152,6 @@ namespace DiskImpact
     return partner_gap;
   }
 
-  double
-  Partner::mass() const
-  {
-    const double R = partner_radius;
-    // A disk per unit thickness, or a sphere, like BodyGeometry::volume().
-    const double volume =
-      partner_material.plane_model() == PlaneModel::axisymmetric ?
-        4. * M_PI * R * R * R / 3. :
-        M_PI * R * R;
-    return partner_material.density() * volume;
-  }
-
   void
   Partner::create_pair_triangulation(const BodyGeometry &geometry,
                                      Triangulation<2>   &triangulation,

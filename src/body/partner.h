@@ -58,9 +58,6 @@ namespace DiskImpact
     /// The distance between the two undeformed surfaces along the axis.
     double
     gap() const;
-    /// The partner's mass (per unit thickness for a disk).
-    double
-    mass() const;
 
     /**
      * Both bodies' coarse meshes as one triangulation with their ids and

@@ -236,6 +236,8 @@ namespace DiskImpact
   CollisionEstimate
   Impact::estimate_collision(const Parameters &parameters) const
   {
+    if (parameters.partner.is_body())
+      return estimate_pair_collision(parameters);
     const auto  &material = parameters.material;
     const double R        = parameters.geometry.radius();
     const double E2       = material.in_plane_young_modulus();
@@ -246,8 +248,6 @@ namespace DiskImpact
     const auto   theory =
       Reference::wall_contact_theory(parameters.geometry.is_axisymmetric());
     CollisionEstimate estimate;
-    if (parameters.partner.is_body())
-      return estimate_pair_collision(parameters);
     try
       {
         const auto one_dof    = theory->elastic_impact(mass, v0, E2, R, C);
@@ -298,17 +298,18 @@ namespace DiskImpact
   {
     // The relative motion of two bodies: the reduced mass on the pair's
     // law (docs/two-bodies.md), with each body's own constant.
-    const bool   sphere  = parameters.geometry.is_axisymmetric();
-    const auto  &partner = parameters.partner;
-    const double R       = parameters.geometry.radius();
-    const double c       = parameters.material.velocity_unit();
-    const double v0      = impact_velocity * c;
-    const double m1 =
-      parameters.material.density() * parameters.geometry.volume();
-    const double m2           = partner.mass();
+    const bool   sphere       = parameters.geometry.is_axisymmetric();
+    const auto  &partner      = parameters.partner;
+    const double R            = parameters.geometry.radius();
+    const double c            = parameters.material.velocity_unit();
+    const double v0           = impact_velocity * c;
     Parameters   partner_only = parameters;
     partner_only.material     = partner.material();
     partner_only.geometry = parameters.geometry.with_radius(partner.radius());
+    const double m1 =
+      parameters.material.density() * parameters.geometry.volume();
+    const double m2 =
+      partner.material().density() * partner_only.geometry.volume();
     const Reference::ContactBody body{
       R,
       parameters.material.in_plane_young_modulus(),
@@ -317,19 +318,16 @@ namespace DiskImpact
       partner.radius(),
       partner.material().in_plane_young_modulus(),
       contact_law_constant_value(partner_only)};
-    const auto one_dof = Reference::two_body_elastic_impact(
-      sphere, m1 * m2 / (m1 + m2), v0, body, other);
+    const double mu = m1 * m2 / (m1 + m2); // the reduced mass
+    const auto   one_dof =
+      Reference::two_body_elastic_impact(sphere, mu, v0, body, other);
     CollisionEstimate estimate;
     estimate.contact_time        = one_dof.contact_time;
     estimate.largest_compression = one_dof.max_compression;
     // The load of the body alone on a wall whose Hertz zone has the pair's
-    // half-width a: a^2 = 4 P R* / (pi E*) (disks), a^3 = 3 P R* / (4 E*)
-    // (spheres), 1/R* = 1/R + 1/R2, 1/E* = 1/E2 + 1/E2'.
-    const double R_pair = R * partner.radius() / (R + partner.radius());
-    const double E_pair = contact_modulus(parameters);
-    const double P      = one_dof.max_force;
-    const double a      = sphere ? std::cbrt(0.75 * P * R_pair / E_pair) :
-                                   std::sqrt(4. * P * R_pair / (M_PI * E_pair));
+    // half-width a at the largest force.
+    const double a =
+      Reference::two_body_half_width(sphere, one_dof.max_force, body, other);
     estimate.largest_load =
       sphere ? 4. * std::pow(a / R, 3) / (3. * M_PI) : a * a / (4. * R * R);
     estimate.one_dof_contact_time = one_dof.contact_time * c / R;
@@ -345,8 +343,7 @@ namespace DiskImpact
         if (tau == partner.material().relaxation_time())
           {
             const auto law = Reference::two_body_force_law(sphere, body, other);
-            const double mu      = m1 * m2 / (m1 + m2);
-            const auto   viscous = Reference::collide(
+            const auto viscous = Reference::collide(
               mu, v0, law, tau, Reference::EndCriterion::force);
             estimate.one_dof_epsilon = viscous.epsilon;
             estimate.one_dof_epsilon_overlap =

@@ -183,9 +183,7 @@ namespace DiskImpact
     if (parameters.time_integrator.redistribute_mass())
       op.set_massless_edge_zone(geometry.contact_point(),
                                 1.5 * largest_half_width);
-    op.assemble(
-      pair ? std::vector<Material>{material, parameters.partner.material()} :
-             std::vector<Material>{material});
+    op.assemble(materials());
     summary.massless_dofs = op.n_massless_dofs();
     summary.n_dofs        = op.get_dof_handler().n_dofs();
     // The modes to project on, of the operator the time stepping uses.
@@ -275,7 +273,7 @@ namespace DiskImpact
   std::vector<Material>
   ImpactSimulation::materials() const
   {
-    if (bodies)
+    if (parameters.partner.is_body())
       return {parameters.material, parameters.partner.material()};
     return {parameters.material};
   }
@@ -499,7 +497,7 @@ namespace DiskImpact
       {
         const auto [flat, revolved] =
           write_deformed_and_revolved_state(op,
-                                            {parameters.material},
+                                            materials(),
                                             ghosted_u,
                                             parameters.geometry.center(),
                                             R,
@@ -525,18 +523,21 @@ namespace DiskImpact
     summary.epsilon          = -v_com_final / v_com_initial;
     summary.contact_time     = contact_end * c / R;
     summary.energy_error     = energy_error;
-    summary.impulse_error =
-      std::abs(body_mass * (v_com_final - v_com_initial) - impulse) /
-      (body_mass * v0);
-    // The energy left in the body's vibration: all but its centre of
-    // mass's kinetic energy.
-    summary.vibration_fraction =
-      (factor * (quadratic_form(op.mass_matrix(), v) +
-                 quadratic_form(op.stiffness_matrix(), u)) -
-       0.5 * body_mass * v_com_final * v_com_final) /
-      energy_initial;
     if (bodies)
       finish_pair();
+    else
+      {
+        summary.impulse_error =
+          std::abs(body_mass * (v_com_final - v_com_initial) - impulse) /
+          (body_mass * v0);
+        // The energy left in the body's vibration: all but its centre of
+        // mass's kinetic energy.
+        summary.vibration_fraction =
+          (factor * (quadratic_form(op.mass_matrix(), v) +
+                     quadratic_form(op.stiffness_matrix(), u)) -
+           0.5 * body_mass * v_com_final * v_com_final) /
+          energy_initial;
+      }
     summary.factorizations = factorizations_before + solver->n_factorizations();
     summary.triangular_solves = solves_before + solver->n_triangular_solves();
     summary.time_step         = dt * c / R;
