@@ -50,17 +50,9 @@ FINE_GRADING = 0.0375      # the grading check
 TARGET_LOAD = 1e-6         # x = P/(pi E2 R) near which the loads are chosen
 CONSTANTS = ("C_com", "C_diameter")
 
-PRM = """set Task = quasistatic contact
-set Output directory = {out}
-subsection Geometry
-  set Domain = half disk
-  set Global refinements = 2
-end
-subsection Material
-  set Plane model = {model}
-  set Poisson ratio = {nu}
-end
-subsection Finite element
+# The numerical entries of every run of the study (also used by
+# two_body_constant_study.py).
+NUMERICS = """subsection Finite element
   set Degree = 2
 end
 subsection Contact
@@ -73,6 +65,17 @@ subsection Quasistatic contact
   set Newton tolerance = 1e-9
 end
 """
+PRM = """set Task = quasistatic contact
+set Output directory = {out}
+subsection Geometry
+  set Domain = half disk
+  set Global refinements = 2
+end
+subsection Material
+  set Plane model = {model}
+  set Poisson ratio = {nu}
+end
+""" + NUMERICS
 
 
 def exact_constants(nu2):

@@ -11,7 +11,8 @@ mesh lies in y >= 0) about the impact axis y = 0 with ParaView's Reflect
 filter (the y components of vectors and the xy components of tensors change
 sign; a full disk is left as it is), warps it by the displacement times the
 scale factor, colours it by the field and saves a PNG with a colour bar and
-the time in the title. The rigid wall is drawn as a black line.
+the time in the title. The rigid wall is drawn as a black line (not with a
+partner body, subsection Partner: both bodies are in the PVD).
 
 Units: the title's time is t c/R (impact.pvd) or the load P/(pi E2 R)
 (contact.pvd), as in the .pvd file. The colour bar shows stresses over E2
@@ -110,6 +111,8 @@ def run_constants(output_dir):
         "R": float(entry("Geometry", "Radius")),
         "wall_point": vector("Contact", "Wall point"),
         "wall_normal": vector("Contact", "Wall normal"),
+        # A partner body (subsection Partner) replaces the wall.
+        "partner_body": "Partner" in prm and entry("Partner", "Kind") == "body",
     }
 
 
@@ -206,8 +209,9 @@ def main():
     bar.Position = [0.86, 0.15]
     bar.ScalarBarLength = 0.7
 
-    # The wall: the line through the wall point normal to the wall normal.
-    if constants is not None:
+    # The wall: the line through the wall point normal to the wall normal
+    # (none when the body collides with a partner body).
+    if constants is not None and not constants["partner_body"]:
         (px, py), (nx, ny) = constants["wall_point"], constants["wall_normal"]
         length = math.hypot(nx, ny)
         tx, ty = -ny / length, nx / length

@@ -134,14 +134,27 @@ namespace DiskImpact
     if (run.task == Task::impact || run.task == Task::impact_convergence)
       time_integrator.check_time_step(
         impact.estimate_collision(*this).contact_time);
+    impact.check_velocities(partner.is_body() ? 1. : 0.5);
+    require(partner.is_body() || impact.partner_radii().empty(),
+            "Impact: 'Partner radii' needs 'Kind = body' in subsection "
+            "Partner");
     if (run.runs_sweep())
-      for (const double v : impact.velocities())
-        {
-          Parameters point = *this;
-          point.impact.set_velocity(v);
-          time_integrator.check_time_step(
-            point.impact.estimate_collision(point).contact_time);
-        }
+      {
+        std::vector<Partner> partners{partner};
+        if (!impact.partner_radii().empty())
+          partners.clear();
+        for (const double r2 : impact.partner_radii())
+          partners.push_back(partner.with_radius(r2));
+        for (const Partner &other : partners)
+          for (const double v : impact.velocities())
+            {
+              Parameters point = *this;
+              point.partner    = other;
+              point.impact.set_velocity(v);
+              time_integrator.check_time_step(
+                point.impact.estimate_collision(point).contact_time);
+            }
+      }
     if (run.runs_sweep())
       {
         require(!impact.velocities().empty(),
@@ -171,9 +184,9 @@ namespace DiskImpact
   Parameters::check_partner() const
   {
     require(run.task == Task::impact || run.task == Task::impact_convergence ||
-              run.task == Task::sweep,
+              run.task == Task::sweep || run.task == Task::quasistatic_contact,
             "Partner: 'Kind = body' is computed by the tasks 'impact', "
-            "'impact convergence' and 'sweep' only");
+            "'impact convergence', 'sweep' and 'quasistatic contact' only");
     require(!units.is_si(),
             "Partner: 'Kind = body' takes dimensionless units (Units = "
             "dimensionless)");

@@ -134,6 +134,17 @@ namespace DiskImpact
     return partner_radius;
   }
 
+  Partner
+  Partner::with_radius(const double radius) const
+  {
+    require(radius > 0.,
+            "Partner: the radius must be positive, got " +
+              Utilities::to_string(radius));
+    Partner partner        = *this;
+    partner.partner_radius = radius;
+    return partner;
+  }
+
   const Material &
   Partner::material() const
   {

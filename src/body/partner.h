@@ -50,6 +50,10 @@ namespace DiskImpact
     /// R2.
     double
     radius() const;
+    /// The same partner with the radius @p radius (a sweep's point);
+    /// throws an InputError if it is not positive.
+    Partner
+    with_radius(double radius) const;
     const Material &
     material() const;
     /// (-gap - R2, 0).

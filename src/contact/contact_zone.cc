@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 
@@ -158,6 +159,36 @@ namespace DiskImpact
     return g;
   }
 
+  void
+  ContactZone::check_reach(const Point &point) const
+  {
+    if (point.gap0 > law.reach() + 0.5 * (bound - law.reach()))
+      throw RunError("the contact reaches edge points whose undeformed "
+                     "gap is " +
+                     approximately(point.gap0) +
+                     ", farther than the contact zone's bound " +
+                     approximately(bound) +
+                     " foresees (from the 1-DOF model): the collision is "
+                     "far from what the model expects");
+  }
+
+  double
+  ContactZone::smallest_gap(const Vector<double> &u) const
+  {
+    double smallest = std::numeric_limits<double>::infinity();
+    for (const Point &point : points)
+      smallest = std::min(smallest, gap(point, u));
+    return smallest;
+  }
+
+  void
+  ContactZone::check_within_bound(const Vector<double> &u) const
+  {
+    for (const Point &point : points)
+      if (gap(point, u) < 0.)
+        check_reach(point);
+  }
+
   std::vector<unsigned int>
   ContactZone::dofs_to_activate(
     const std::vector<const Vector<double> *> &states) const
@@ -170,15 +201,7 @@ namespace DiskImpact
         for (const auto *u : states)
           if (gap(point, *u) < 0.)
             {
-              if (point.gap0 > law.reach() + 0.5 * (bound - law.reach()))
-                throw RunError(
-                  "impact: the contact reaches edge points whose undeformed "
-                  "gap is " +
-                  approximately(point.gap0) +
-                  ", farther than the contact zone's bound " +
-                  approximately(bound) +
-                  " foresees (from the 1-DOF model): the collision is far "
-                  "from what the model expects");
+              check_reach(point);
               for (const auto &entry : point.row)
                 if (active_position[entry.first] < 0)
                   missing.insert(entry.first);

@@ -62,6 +62,15 @@ namespace DiskImpact
     dofs_to_activate(
       const std::vector<const dealii::Vector<double> *> &states) const;
 
+    /// The smallest gap of the candidates for the values @p u (on D).
+    double
+    smallest_gap(const dealii::Vector<double> &u) const;
+
+    /// Throws a RunError if a point in the outer half of the candidates
+    /// (beyond the law's reach) touches for the values @p u (on D).
+    void
+    check_within_bound(const dealii::Vector<double> &u) const;
+
     /// Append the DoFs @p positions (in D) to C, in this order.
     void
     activate(const std::vector<unsigned int> &positions);
@@ -112,6 +121,10 @@ namespace DiskImpact
     /// g of @p point for the values @p u on D.
     static double
     gap(const Point &point, const dealii::Vector<double> &u);
+    /// The RunError for a touching point beyond the outer half of the
+    /// candidates, if @p point is one.
+    void
+    check_reach(const Point &point) const;
 
     WallLaw law;
     double  bound;

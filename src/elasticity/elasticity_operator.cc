@@ -23,6 +23,19 @@ namespace DiskImpact
 {
   using namespace dealii;
 
+  namespace
+  {
+    /// Whether @p cell belongs to the body of material id @p body (every
+    /// cell does if @p body is invalid_material_id).
+    template <typename Cell>
+    bool
+    on_body(const Cell &cell, const types::material_id body)
+    {
+      return body == numbers::invalid_material_id ||
+             cell->material_id() == body;
+    }
+  } // namespace
+
   void
   FiniteElementParameters::declare_parameters(ParameterHandler &prm)
   {
@@ -58,7 +71,8 @@ namespace DiskImpact
   ElasticityOperator::setup(
     const parallel::distributed::Triangulation<2> &triangulation,
     const BodyGeometry                            &geometry,
-    const bool                                     with_tangent)
+    const bool                                     with_tangent,
+    const std::vector<Point<2>>                   &axial_pins)
   {
     section = Section(geometry.is_axisymmetric());
     fe      = std::make_unique<FESystem<2>>(FE_Q<2>(fe_degree), 2);
@@ -83,6 +97,7 @@ namespace DiskImpact
         Functions::ZeroFunction<2>(2),
         constraints,
         ComponentMask(std::vector<bool>{false, true}));
+    pin_axial_displacement(axial_pins);
     constraints.close();
     massless_dofs = IndexSet(dof_handler.n_dofs());
 
@@ -327,7 +342,8 @@ namespace DiskImpact
 
   void
   ElasticityOperator::assemble_body_force(const Tensor<1, 2> &force_per_area,
-                                          PETScWrappers::MPI::Vector &f) const
+                                          PETScWrappers::MPI::Vector &f,
+                                          const types::material_id body) const
   {
     const QGauss<2>                      quadrature(fe_degree + 1);
     FEValues<2>                          fe_values(*mapping,
@@ -341,7 +357,7 @@ namespace DiskImpact
     const FEValuesExtractors::Vector     displacement(0);
     f = 0.;
     for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
+      if (cell->is_locally_owned() && on_body(cell, body))
         {
           fe_values.reinit(cell);
           cell_f = 0.;
@@ -357,8 +373,31 @@ namespace DiskImpact
     f.compress(VectorOperation::add);
   }
 
+  void
+  ElasticityOperator::pin_axial_displacement(const std::vector<Point<2>> &pins)
+  {
+    for (const Point<2> &pin : pins)
+      {
+        const double tolerance = 1e-10 * (1. + pin.norm());
+        double       found     = 0.;
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (!cell->is_artificial())
+            for (const unsigned int v : cell->vertex_indices())
+              if (cell->vertex(v).distance(pin) < tolerance)
+                {
+                  const auto dof = cell->vertex_dof_index(v, 0);
+                  if (!constraints.is_constrained(dof))
+                    constraints.add_line(dof);
+                  found = 1.;
+                }
+        AssertThrow(Utilities::MPI::max(found, dof_handler.get_communicator()) >
+                      0.,
+                    ExcMessage("setup: no mesh vertex at an axial pin"));
+      }
+  }
+
   double
-  ElasticityOperator::volume() const
+  ElasticityOperator::volume(const types::material_id body) const
   {
     const QGauss<2> quadrature(fe_degree + 1);
     FEValues<2>     fe_values(*mapping,
@@ -367,7 +406,7 @@ namespace DiskImpact
                           update_quadrature_points | update_JxW_values);
     double          sum = 0.;
     for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
+      if (cell->is_locally_owned() && on_body(cell, body))
         {
           fe_values.reinit(cell);
           for (const unsigned int q : fe_values.quadrature_point_indices())
@@ -379,7 +418,8 @@ namespace DiskImpact
 
   Tensor<1, 2>
   ElasticityOperator::mean_displacement(
-    const PETScWrappers::MPI::Vector &ghosted_u) const
+    const PETScWrappers::MPI::Vector &ghosted_u,
+    const types::material_id          body) const
   {
     const QGauss<2>           quadrature(fe_degree + 1);
     FEValues<2>               fe_values(*mapping,
@@ -391,7 +431,7 @@ namespace DiskImpact
     Tensor<1, 2>              integral;
     double                    volume = 0.;
     for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
+      if (cell->is_locally_owned() && on_body(cell, body))
         {
           fe_values.reinit(cell);
           fe_values[FEValuesExtractors::Vector(0)].get_function_values(
@@ -416,14 +456,15 @@ namespace DiskImpact
   Tensor<1, 2>
   ElasticityOperator::vertex_displacement(
     const PETScWrappers::MPI::Vector &ghosted_u,
-    const Point<2>                   &vertex) const
+    const Point<2>                   &vertex,
+    const types::material_id          body) const
   {
     // Each rank that owns a cell at the vertex contributes once.
     const double tolerance = 1e-10 * (1. + vertex.norm());
     Tensor<1, 2> u;
     double       found = 0.;
     for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned() && found == 0.)
+      if (cell->is_locally_owned() && on_body(cell, body) && found == 0.)
         for (const unsigned int v : cell->vertex_indices())
           if (cell->vertex(v).distance(vertex) < tolerance)
             {

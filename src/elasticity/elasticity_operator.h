@@ -52,11 +52,15 @@ namespace DiskImpact
     degree() const;
 
     /// Distribute DoFs on @p triangulation, build constraints and matrices
-    /// (with @p with_tangent also a matrix of K's pattern for Newton).
+    /// (with @p with_tangent also a matrix of K's pattern for Newton). The
+    /// x-displacement is held at zero at the mesh vertices @p axial_pins
+    /// (a free body's translation along the impact axis, removed for a
+    /// static solve).
     void
     setup(const dealii::parallel::distributed::Triangulation<2> &triangulation,
           const BodyGeometry                                    &geometry,
-          bool with_tangent = false);
+          bool                                 with_tangent = false,
+          const std::vector<dealii::Point<2>> &axial_pins   = {});
 
     /**
      * Mass redistribution (Khenous, Laborde & Renard, Eur. J. Mech. A/Solids
@@ -103,26 +107,37 @@ namespace DiskImpact
     move_constrained_eigenvalues(double eigenvalue);
 
     /// f_i = int b . v_i dV for a uniform body force @p force_per_area (per
-    /// volume for a sphere).
+    /// volume for a sphere), on the cells of material id @p body (all cells
+    /// if invalid_material_id).
     void
     assemble_body_force(const dealii::Tensor<1, 2>         &force_per_area,
-                        dealii::PETScWrappers::MPI::Vector &f) const;
+                        dealii::PETScWrappers::MPI::Vector &f,
+                        dealii::types::material_id          body =
+                          dealii::numbers::invalid_material_id) const;
 
-    /// The body's volume (its area for a disk of unit thickness), with the
-    /// quadrature of assemble_body_force().
+    /// The volume (area for a disk of unit thickness) of the cells of
+    /// material id @p body (all if invalid_material_id), with the quadrature
+    /// of assemble_body_force().
     double
-    volume() const;
+    volume(dealii::types::material_id body =
+             dealii::numbers::invalid_material_id) const;
 
-    /// Volume average of the displacement: the centre of mass's
+    /// Volume average of the displacement over the cells of material id
+    /// @p body (all if invalid_material_id): the centre of mass's
     /// displacement for a uniform density (on a sphere along the axis only).
     dealii::Tensor<1, 2>
-    mean_displacement(
-      const dealii::PETScWrappers::MPI::Vector &ghosted_u) const;
+    mean_displacement(const dealii::PETScWrappers::MPI::Vector &ghosted_u,
+                      dealii::types::material_id                body =
+                        dealii::numbers::invalid_material_id) const;
 
-    /// The displacement at a vertex of the mesh.
+    /// The displacement at a vertex of the mesh, seen from the cells of
+    /// material id @p body (all if invalid_material_id): two bodies that
+    /// touch have a vertex each at the contact point.
     dealii::Tensor<1, 2>
     vertex_displacement(const dealii::PETScWrappers::MPI::Vector &ghosted_u,
-                        const dealii::Point<2>                   &vertex) const;
+                        const dealii::Point<2>                   &vertex,
+                        dealii::types::material_id                body =
+                          dealii::numbers::invalid_material_id) const;
 
     /// The Newton tangent, reset to K (setup() with with_tangent).
     dealii::PETScWrappers::MPI::SparseMatrix &
@@ -159,6 +174,10 @@ namespace DiskImpact
     create_ghosted(const dealii::PETScWrappers::MPI::Vector &vector) const;
 
   private:
+    /// Constrain the x-displacement to zero at the vertices @p pins.
+    void
+    pin_axial_displacement(const std::vector<dealii::Point<2>> &pins);
+
     const unsigned int fe_degree;
     Section            section;
 

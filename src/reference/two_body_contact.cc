@@ -138,6 +138,22 @@ namespace DiskImpact
     }
 
     double
+    wall_law_constant(const bool         sphere,
+                      const double       force,
+                      const double       approach,
+                      const double       a,
+                      const ContactBody &body)
+    {
+      if (!(force > 0.) || !(a > 0.))
+        throw std::invalid_argument(
+          "wall_law_constant: the force and the half-width must be positive");
+      const double E = body.modulus, R = body.radius;
+      if (sphere)
+        return (approach - 0.75 * force / (a * E)) * E * R / force;
+      return M_PI * E * approach / force - 2. * std::log(4. * R / a);
+    }
+
+    double
     two_sphere_approach(const double       force,
                         const ContactBody &b1,
                         const ContactBody &b2)

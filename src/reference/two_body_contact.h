@@ -82,6 +82,27 @@ namespace DiskImpact
                         const ContactBody &b2);
 
     /**
+     * The constant of a body's wall law read off its share @p approach of
+     * the approach (its contact centre's displacement toward the other
+     * body relative to its centre of mass) under the force @p force with
+     * the Hertz pressure of half-width (contact radius) @p a; the inverse
+     * of one term of two_disk_approach() or two_sphere_approach():
+     *
+     *   disk:   C = pi E approach / P - 2 ln(4 R / a),
+     *   sphere: D = (approach - 3 P / (4 a E)) E R / P.
+     *
+     * With equivalent_body() and the pair's approach it gives the pair's
+     * C_eff or D_eff (docs/two-bodies.md). Only the radius and modulus of
+     * @p body are used.
+     */
+    double
+    wall_law_constant(bool               sphere,
+                      double             force,
+                      double             approach,
+                      double             a,
+                      const ContactBody &body);
+
+    /**
      * The largest approach of the pair's law, where d delta / dP = 0: for
      * disks 4 R_eff e^{C_eff - 1} (LogContactLaw::maximum_compression()),
      * for spheres R_eff / (12 D_eff^2) if D_eff < 0, else infinity.

@@ -63,7 +63,8 @@ namespace DiskImpact
                       "0.01",
                       Patterns::Double(),
                       "Impact speed v_i in units of c = sqrt(E2 / rho) [-], "
-                      "0 < v_i <= 0.5.");
+                      "0 < v_i <= 0.5; with a partner body (subsection "
+                      "Partner) the relative speed, 0 < v_i <= 1.");
     prm.declare_entry("Elements across contact",
                       "12",
                       Patterns::Integer(4, 1000),
@@ -121,6 +122,12 @@ namespace DiskImpact
                       "Task 'sweep': Kelvin-Voigt relaxation times (as "
                       "'Relaxation time' of subsection Material) [R/c]; "
                       "empty: the material's.");
+    prm.declare_entry("Partner radii",
+                      "",
+                      Patterns::List(Patterns::Double(0.), 0),
+                      "Task 'sweep' with 'Kind = body' in subsection Partner: "
+                      "the partner's radii (as its 'Radius') [R], each with "
+                      "every velocity; empty: the partner's 'Radius'.");
     prm.declare_entry("Error estimate",
                       "true",
                       Patterns::Bool(),
@@ -160,17 +167,27 @@ namespace DiskImpact
     sweep_velocities        = get_double_list(prm, "Velocities");
     sweep_poisson_ratios    = get_double_list(prm, "Poisson ratios");
     sweep_relaxation_times  = get_double_list(prm, "Relaxation times");
+    sweep_partner_radii     = get_double_list(prm, "Partner radii");
     error_estimate          = prm.get_bool("Error estimate");
     resume_sweep            = prm.get_bool("Resume");
+    prm.leave_subsection();
+    check_velocities(1.);
+    parse_contact_law_constant(contact_law_constant, 0., false);
+  }
+
+  void
+  Impact::check_velocities(const double largest) const
+  {
+    const std::string range =
+      "0 < v/c <= " + Utilities::to_string(largest) +
+      (largest > 0.5 ? " (the relative speed of two bodies)" : "");
     require_each(
       sweep_velocities,
-      [](const double v) { return v > 0. && v <= 0.5; },
-      "Impact: every entry of 'Velocities' must satisfy 0 < v/c <= 0.5");
-    prm.leave_subsection();
-    require(impact_velocity > 0. && impact_velocity <= 0.5,
-            "Impact: 'Velocity' must satisfy 0 < v/c <= 0.5, got " +
-              Utilities::to_string(impact_velocity));
-    parse_contact_law_constant(contact_law_constant, 0., false);
+      [&](const double v) { return v > 0. && v <= largest; },
+      "Impact: every entry of 'Velocities' must satisfy " + range);
+    require(impact_velocity > 0. && impact_velocity <= largest,
+            "Impact: 'Velocity' must satisfy " + range + ", got " +
+              approximately(impact_velocity, 6));
   }
 
   double
@@ -201,6 +218,12 @@ namespace DiskImpact
   Impact::relaxation_times() const
   {
     return sweep_relaxation_times;
+  }
+
+  const std::vector<double> &
+  Impact::partner_radii() const
+  {
+    return sweep_partner_radii;
   }
 
   bool
@@ -293,35 +316,91 @@ namespace DiskImpact
     return estimate;
   }
 
+  std::pair<Reference::ContactBody, Reference::ContactBody>
+  Impact::contact_bodies(const Parameters &parameters) const
+  {
+    const auto &partner      = parameters.partner;
+    Parameters  partner_only = parameters;
+    partner_only.material    = partner.material();
+    partner_only.geometry = parameters.geometry.with_radius(partner.radius());
+    return {{parameters.geometry.radius(),
+             parameters.material.in_plane_young_modulus(),
+             contact_law_constant_value(parameters)},
+            {partner.radius(),
+             partner.material().in_plane_young_modulus(),
+             contact_law_constant_value(partner_only)}};
+  }
+
   CollisionEstimate
   Impact::estimate_pair_collision(const Parameters &parameters) const
   {
     // The relative motion of two bodies: the reduced mass on the pair's
     // law (docs/two-bodies.md), with each body's own constant.
-    const bool   sphere       = parameters.geometry.is_axisymmetric();
-    const auto  &partner      = parameters.partner;
-    const double R            = parameters.geometry.radius();
-    const double c            = parameters.material.velocity_unit();
-    const double v0           = impact_velocity * c;
-    Parameters   partner_only = parameters;
-    partner_only.material     = partner.material();
-    partner_only.geometry = parameters.geometry.with_radius(partner.radius());
+    const bool   sphere  = parameters.geometry.is_axisymmetric();
+    const auto  &partner = parameters.partner;
+    const double R       = parameters.geometry.radius();
+    const double c       = parameters.material.velocity_unit();
+    const double v0      = impact_velocity * c;
     const double m1 =
       parameters.material.density() * parameters.geometry.volume();
     const double m2 =
-      partner.material().density() * partner_only.geometry.volume();
-    const Reference::ContactBody body{
-      R,
-      parameters.material.in_plane_young_modulus(),
-      contact_law_constant_value(parameters)};
-    const Reference::ContactBody other{
-      partner.radius(),
-      partner.material().in_plane_young_modulus(),
-      contact_law_constant_value(partner_only)};
-    const double mu = m1 * m2 / (m1 + m2); // the reduced mass
-    const auto   one_dof =
-      Reference::two_body_elastic_impact(sphere, mu, v0, body, other);
-    CollisionEstimate estimate;
+      partner.material().density() *
+      parameters.geometry.with_radius(partner.radius()).volume();
+    const auto [body, other]   = contact_bodies(parameters);
+    const double            mu = m1 * m2 / (m1 + m2); // the reduced mass
+    CollisionEstimate       estimate;
+    Reference::OneDofImpact one_dof;
+    bool                    within_law = true;
+    try
+      {
+        one_dof =
+          Reference::two_body_elastic_impact(sphere, mu, v0, body, other);
+        estimate.one_dof_contact_time = one_dof.contact_time * c / R;
+        estimate.one_dof_delta_max    = one_dof.max_compression / R;
+      }
+    catch (const std::domain_error &)
+      {
+        within_law = false;
+        // Beyond the pair's law: the wall's estimate (seed 001, eq. 61) for
+        // the equivalent body (docs/two-bodies.md) with the reduced mass,
+        // or Hertz's (D = 0) for spheres; no 1-DOF values.
+        const auto eq = Reference::equivalent_body(sphere, body, other);
+        if (sphere)
+          {
+            const auto hertz =
+              Reference::hertz_sphere_impact(mu, eq.modulus, eq.radius, v0);
+            one_dof.max_compression = hertz.max_overlap;
+            one_dof.max_force       = hertz.max_force;
+            one_dof.contact_time    = hertz.contact_time;
+          }
+        else
+          {
+            // delta = delta_0 sqrt(L), delta_0 = v sqrt(mu / (pi E_eff)),
+            // L = sum_i w_i 2 ln(4 R_i / a) at a^2 = 4 R_eff delta_0, and
+            // F = pi E_eff delta / L at a^2 = 4 R_eff delta: for one body on
+            // the wall eq. 61's delta = v R sqrt(ln(4 / v)) and its load;
+            // for identical bodies twice its delta at its force.
+            const auto log_sum = [&](const double a) {
+              double L = 0.;
+              for (const auto *b : {&body, &other})
+                if (std::isfinite(b->modulus))
+                  L +=
+                    eq.modulus / b->modulus * 2. * std::log(4. * b->radius / a);
+              return L;
+            };
+            const double delta_0 = v0 * std::sqrt(mu / (M_PI * eq.modulus));
+            one_dof.max_compression =
+              delta_0 * std::sqrt(log_sum(std::sqrt(4. * eq.radius * delta_0)));
+            one_dof.max_force =
+              M_PI * eq.modulus * one_dof.max_compression /
+              log_sum(std::sqrt(4. * eq.radius * one_dof.max_compression));
+            one_dof.contact_time = M_PI * one_dof.max_compression / v0;
+          }
+        estimate.one_dof_contact_time    = std::nan("");
+        estimate.one_dof_delta_max       = std::nan("");
+        estimate.one_dof_epsilon         = std::nan("");
+        estimate.one_dof_epsilon_overlap = std::nan("");
+      }
     estimate.contact_time        = one_dof.contact_time;
     estimate.largest_compression = one_dof.max_compression;
     // The load of the body alone on a wall whose Hertz zone has the pair's
@@ -330,8 +409,6 @@ namespace DiskImpact
       Reference::two_body_half_width(sphere, one_dof.max_force, body, other);
     estimate.largest_load =
       sphere ? 4. * std::pow(a / R, 3) / (3. * M_PI) : a * a / (4. * R * R);
-    estimate.one_dof_contact_time = one_dof.contact_time * c / R;
-    estimate.one_dof_delta_max    = one_dof.max_compression / R;
     // Kelvin-Voigt with one relaxation time: the relative motion obeys
     // mu delta'' + F + tau delta' F' = 0 (each body's viscous force is tau
     // times the rate of its elastic force).
@@ -340,7 +417,7 @@ namespace DiskImpact
       {
         estimate.one_dof_epsilon         = std::nan("");
         estimate.one_dof_epsilon_overlap = std::nan("");
-        if (tau == partner.material().relaxation_time())
+        if (within_law && tau == partner.material().relaxation_time())
           {
             const auto law = Reference::two_body_force_law(sphere, body, other);
             const auto viscous = Reference::collide(

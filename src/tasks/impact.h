@@ -1,5 +1,7 @@
 #pragma once
 
+#include "reference/two_body_contact.h"
+
 #include <deal.II/base/parameter_handler.h>
 
 #include <deal.II/grid/tria.h>
@@ -9,6 +11,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace DiskImpact
@@ -83,16 +86,24 @@ namespace DiskImpact
     velocity() const;
     void
     set_velocity(double v);
-    /// The sweep's velocities, Poisson ratios and relaxation times (the
-    /// latter two empty: the material's).
+    /// The sweep's velocities, Poisson ratios, relaxation times and
+    /// partner radii (the latter three empty: the material's, the
+    /// partner's).
     const std::vector<double> &
     velocities() const;
     const std::vector<double> &
     poisson_ratios() const;
     const std::vector<double> &
     relaxation_times() const;
+    const std::vector<double> &
+    partner_radii() const;
     bool
     estimate_errors() const;
+    /// Throws an InputError unless 0 < v <= @p largest for 'Velocity' and
+    /// every entry of 'Velocities' (0.5 against the wall, 1 for the
+    /// relative speed of two bodies).
+    void
+    check_velocities(double largest) const;
     /// Task 'sweep': whether to keep an earlier sweep's finished points.
     bool
     resume() const;
@@ -129,6 +140,12 @@ namespace DiskImpact
     /// The constant of the 1-DOF model's wall law: a disk's C, a sphere's D.
     double
     contact_law_constant_value(const Parameters &parameters) const;
+
+    /// The body and its partner (subsection Partner) as the two-body law
+    /// sees them: radius, modulus (E2 of a disk, E* of a sphere) and the
+    /// constant of each one's wall law (contact_law_constant_value()).
+    std::pair<Reference::ContactBody, Reference::ContactBody>
+    contact_bodies(const Parameters &parameters) const;
 
     /**
      * The body's dimensionless dissipation: for a disk Schwager's
@@ -173,6 +190,7 @@ namespace DiskImpact
     std::vector<double> sweep_velocities;
     std::vector<double> sweep_poisson_ratios;
     std::vector<double> sweep_relaxation_times;
+    std::vector<double> sweep_partner_radii;
     bool                error_estimate          = true;
     bool                resume_sweep            = true;
     unsigned int        elements_across_contact = 12;

@@ -9,7 +9,10 @@
 #include "output/atomic_file.h"
 #include "output/csv_table.h"
 #include "output/state_output.h"
+#include "reference/two_body_contact.h"
 #include "reference/wall_contact_theory.h"
+#include "tasks/impact.h"
+#include "tasks/quasistatic_pair.h"
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/data_out_base.h>
@@ -340,12 +343,29 @@ namespace DiskImpact
                                   const double      max_cells) const
   {
     const auto &geometry = parameters.geometry;
-    geometry.create_triangulation(triangulation, max_cells);
-    const auto theory =
-      Reference::wall_contact_theory(geometry.is_axisymmetric());
+    const bool  sphere   = geometry.is_axisymmetric();
+    const auto  theory   = Reference::wall_contact_theory(sphere);
+    double      a        = theory->half_width(load) * geometry.radius();
+    if (parameters.partner.is_body())
+      {
+        // Both bodies, graded for the pair's Hertz half-width.
+        parameters.partner.create_pair_triangulation(geometry,
+                                                     triangulation,
+                                                     max_cells);
+        const auto [body, partner] =
+          parameters.impact.contact_bodies(parameters);
+        a =
+          Reference::two_body_half_width(sphere,
+                                         load * theory->force_unit(body.modulus,
+                                                                   body.radius),
+                                         body,
+                                         partner);
+      }
+    else
+      geometry.create_triangulation(triangulation, max_cells);
     refine_toward_contact(triangulation,
                           geometry.contact_point(),
-                          theory->half_width(load) * geometry.radius(),
+                          a,
                           elements_across_contact,
                           grading,
                           max_cells);
@@ -355,6 +375,8 @@ namespace DiskImpact
   QuasistaticContact::run(const Parameters &parameters,
                           MPI_Comm          communicator) const
   {
+    if (parameters.partner.is_body())
+      return run_pair(parameters, communicator);
     ConditionalOStream pcout(std::cout,
                              Utilities::MPI::this_mpi_process(communicator) ==
                                0);
@@ -448,6 +470,117 @@ namespace DiskImpact
     on_root(communicator, [&]() {
       law.write(directory + "/contact_law.csv");
       profile.write(directory + "/pressure_profile.csv");
+      write_atomically(directory + "/contact.pvd", [&](std::ostream &out) {
+        DataOutBase::write_pvd_record(out, records);
+      });
+    });
+  }
+  void
+  QuasistaticContact::run_pair(const Parameters &parameters,
+                               MPI_Comm          communicator) const
+  {
+    ConditionalOStream pcout(std::cout,
+                             Utilities::MPI::this_mpi_process(communicator) ==
+                               0);
+    const std::string &directory = parameters.run.output_directory;
+    const bool         sphere    = parameters.geometry.is_axisymmetric();
+    const double       R         = parameters.geometry.radius();
+    const auto         theory    = Reference::wall_contact_theory(sphere);
+    const std::string  C         = theory->constant_symbol();
+
+    CsvTable                                    law({"load",
+                                                     "pair_load",
+                                                     "approach",
+                                                     "share_body",
+                                                     "share_partner",
+                                                     "half_width",
+                                                     "hertz_half_width",
+                                                     "penetration",
+                                                     C + "_pair",
+                                                     C + "_eff",
+                                                     C + "_body",
+                                                     C + "_body_wall",
+                                                     C + "_partner",
+                                                     C + "_partner_wall",
+                                                     "newton_iterations",
+                                                     "force_balance_error",
+                                                     "penalty_factor",
+                                                     "h_contact",
+                                                     "n_dofs",
+                                                     "radius_ratio",
+                                                     "modulus_ratio",
+                                                     "poisson_ratio_2d",
+                                                     "partner_poisson_ratio_2d"});
+    std::vector<std::pair<double, std::string>> records;
+
+    pcout << "Two bodies pressed together: the constants of the approach of "
+             "the centres (pair, against the derived "
+          << C << "_eff) and of each body's share\n"
+          << "     load      " << C << "_pair      " << C << "_eff     " << C
+          << "_body   " << C
+          << "_partner  a/a_Hertz-1  force bal.  "
+             "penetration Newton     DoFs\n";
+    for (unsigned int i = 0; i < loads.size(); ++i)
+      {
+        QuasistaticPair problem(parameters, loads[i], communicator);
+        problem.solve(newton_tolerance, max_newton_iterations);
+        const PairContactPoint p    = problem.results();
+        const auto &[body, partner] = problem.bodies();
+        const auto equivalent =
+          Reference::equivalent_body(sphere, body, partner);
+        const double P             = problem.force();
+        const double a             = problem.hertz_half_width();
+        const double constant_pair = Reference::wall_law_constant(
+          sphere, P, p.approach * R, a, equivalent);
+        const double constant_body =
+          Reference::wall_law_constant(sphere, P, p.shares[0] * R, a, body);
+        const double constant_partner =
+          Reference::wall_law_constant(sphere, P, p.shares[1] * R, a, partner);
+        law.start_row();
+        for (const double v :
+             {p.load,
+              P / theory->force_unit(equivalent.modulus, equivalent.radius),
+              p.approach,
+              p.shares[0],
+              p.shares[1],
+              p.half_width,
+              a / R,
+              p.penetration,
+              constant_pair,
+              equivalent.constant,
+              constant_body,
+              body.constant,
+              constant_partner,
+              partner.constant})
+          law.add(v);
+        law.add(p.newton_iterations);
+        for (const double v : {p.force_balance,
+                               parameters.contact.penalty_factor(),
+                               p.h_contact})
+          law.add(v);
+        law.add(p.n_dofs);
+        for (const double v :
+             {partner.radius / body.radius,
+              partner.modulus / body.modulus,
+              parameters.material.in_plane_poisson_ratio(),
+              parameters.partner.material().in_plane_poisson_ratio()})
+          law.add(v);
+        records.emplace_back(p.load, problem.write_state(directory, i));
+
+        std::ostringstream line;
+        line << std::scientific << std::setprecision(3) << std::setw(10)
+             << p.load << std::fixed << std::setprecision(6) << std::setw(12)
+             << constant_pair << std::setw(12) << equivalent.constant
+             << std::setw(12) << constant_body << std::setw(12)
+             << constant_partner << std::scientific << std::setprecision(2)
+             << std::setw(13) << p.half_width * R / a - 1. << std::setw(12)
+             << p.force_balance << std::setw(12) << p.penetration
+             << std::setw(7) << p.newton_iterations << std::setw(9) << p.n_dofs
+             << '\n';
+        pcout << line.str() << std::flush;
+      }
+    on_root(communicator, [&]() {
+      law.write(directory + "/contact_law.csv");
       write_atomically(directory + "/contact.pvd", [&](std::ostream &out) {
         DataOutBase::write_pvd_record(out, records);
       });

@@ -53,8 +53,9 @@ namespace DiskImpact
     double
     largest_load() const;
 
-    /// The mesh for @p load, graded toward the contact point; throws an
-    /// InputError if it would exceed about @p max_cells cells.
+    /// The mesh for @p load, graded toward the contact point (with a
+    /// partner body both bodies', for the pair's Hertz half-width); throws
+    /// an InputError if it would exceed about @p max_cells cells.
     void
     create_mesh(
       const Parameters         &parameters,
@@ -63,6 +64,11 @@ namespace DiskImpact
       double max_cells = std::numeric_limits<double>::infinity()) const;
 
   private:
+    /// run() with a partner body (QuasistaticPair): contact_law.csv with
+    /// the approach of the centres, each body's share and the constants.
+    void
+    run_pair(const Parameters &parameters, MPI_Comm communicator) const;
+
     std::vector<double> loads;
     unsigned int        elements_across_contact = 16;
     double              grading                 = 0.3;

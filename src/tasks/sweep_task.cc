@@ -41,10 +41,11 @@ namespace DiskImpact
                                                 "wall_time",
                                                 "relaxation_time",
                                                 "alpha",
-                                                "one_dof_epsilon"};
+                                                "one_dof_epsilon",
+                                                "partner_radius"};
     /// Positions of the columns that identify a point.
     constexpr unsigned int velocity_column = 0, poisson_column = 1,
-                           relaxation_column = 13;
+                           relaxation_column = 13, partner_column = 16;
 
     /// The entries that choose the points (and whether to resume), which a
     /// resumed sweep may change.
@@ -53,6 +54,7 @@ namespace DiskImpact
       {"Impact", "Velocities"},
       {"Impact", "Poisson ratios"},
       {"Impact", "Relaxation times"},
+      {"Impact", "Partner radii"},
       {"Impact", "Resume"}};
 
     using Row = std::vector<double>;
@@ -66,7 +68,8 @@ namespace DiskImpact
     };
 
     /// The sweep's points in the order of the table: Poisson ratios, then
-    /// relaxation times, then velocities (empty lists: the material's).
+    /// relaxation times, then partner radii, then velocities (empty lists:
+    /// the material's, the partner's).
     std::vector<Point>
     sweep_points(const Parameters &parameters)
     {
@@ -79,21 +82,27 @@ namespace DiskImpact
       for (const double nu : or_material(parameters.impact.poisson_ratios()))
         for (const double tau :
              or_material(parameters.impact.relaxation_times()))
-          for (const double v : parameters.impact.velocities())
-            {
-              Point point{parameters, Row(column_names.size(), std::nan(""))};
-              auto &material = point.parameters.material;
-              if (!std::isnan(nu))
-                material = material.with_poisson_ratio(nu);
-              if (!std::isnan(tau))
-                material = material.with_relaxation_time(tau);
-              point.parameters.impact.set_velocity(v);
-              point.row[velocity_column]   = v;
-              point.row[poisson_column]    = material.poisson_ratio();
-              point.row[8]                 = material.in_plane_poisson_ratio();
-              point.row[relaxation_column] = material.relaxation_time();
-              points.push_back(std::move(point));
-            }
+          for (const double r2 : or_material(parameters.impact.partner_radii()))
+            for (const double v : parameters.impact.velocities())
+              {
+                Point point{parameters, Row(column_names.size(), std::nan(""))};
+                auto &material = point.parameters.material;
+                auto &partner  = point.parameters.partner;
+                if (!std::isnan(nu))
+                  material = material.with_poisson_ratio(nu);
+                if (!std::isnan(tau))
+                  material = material.with_relaxation_time(tau);
+                if (!std::isnan(r2))
+                  partner = partner.with_radius(r2);
+                point.parameters.impact.set_velocity(v);
+                point.row[velocity_column] = v;
+                point.row[poisson_column]  = material.poisson_ratio();
+                point.row[8]               = material.in_plane_poisson_ratio();
+                point.row[relaxation_column] = material.relaxation_time();
+                if (partner.is_body())
+                  point.row[partner_column] = partner.radius();
+                points.push_back(std::move(point));
+              }
       return points;
     }
 
@@ -102,7 +111,7 @@ namespace DiskImpact
     same_point(const Row &a, const Row &b)
     {
       for (const unsigned int c :
-           {velocity_column, poisson_column, relaxation_column})
+           {velocity_column, poisson_column, relaxation_column, partner_column})
         if (std::abs(a[c] - b[c]) > 1e-12 * std::max(1., std::abs(b[c])))
           return false;
       return true;
@@ -161,6 +170,8 @@ namespace DiskImpact
            << row[14] << std::scientific << std::setprecision(1)
            << std::setw(11) << row[7] << std::fixed << std::setw(8) << row[12]
            << " s";
+      if (!std::isnan(row[partner_column]))
+        line << std::setprecision(4) << "  R2 = " << row[partner_column];
       return line.str();
     }
 

@@ -328,3 +328,43 @@ TEST_CASE("Two bodies: the largest approach and the law's range",
                                      {infinity, E, 0.}),
                   std::invalid_argument);
 }
+
+TEST_CASE("Two bodies: each body's constant and the pair's are read back "
+          "from the approaches",
+          "[reference][two body]")
+{
+  // wall_law_constant() inverts one body's term of the sum, and applied to
+  // the whole approach with the equivalent body's radius and modulus it
+  // gives C_eff (D_eff): the pair is that body on a wall.
+  for (const bool sphere : {false, true})
+    for (const auto &[b1, b2] : dissimilar_pairs(sphere))
+      {
+        CAPTURE(sphere, b2.radius / b1.radius, b2.modulus / b1.modulus);
+        const ContactBody equivalent = equivalent_body(sphere, b1, b2);
+        for (const double x : {1e-6, 1e-3})
+          {
+            CAPTURE(x);
+            const double force = x * force_unit(sphere, b1);
+            const double a     = two_body_half_width(sphere, force, b1, b2);
+            for (const ContactBody *b : {&b1, &b2})
+              {
+                // One body's share: its term of the sum at the common a.
+                const double share =
+                  sphere ? 0.75 * force / (a * b->modulus) +
+                             b->constant * force / (b->modulus * b->radius) :
+                           force / (M_PI * b->modulus) *
+                             (2. * std::log(4. * b->radius / a) + b->constant);
+                CHECK(wall_law_constant(sphere, force, share, a, *b) ==
+                      Approx(b->constant).margin(1e-10));
+              }
+            CHECK(wall_law_constant(sphere,
+                                    force,
+                                    approach(sphere, force, b1, b2),
+                                    a,
+                                    equivalent) ==
+                  Approx(equivalent.constant).margin(1e-10));
+          }
+      }
+  CHECK_THROWS_AS(wall_law_constant(false, 0., 1., 1., {1., 1., 0.}),
+                  std::invalid_argument);
+}
