@@ -8,18 +8,22 @@ wall) with bench/dem_collision.py:
   LIGGGHTS, dem/liggghts.txt (Hertz, constant epsilon): at the reference
             speed and at the smallest and largest speed of the table;
   LAMMPS,   dem/lammps.txt (Hertz with viscoelastic damping, seed 003's
-            law with the fitted A): at every speed of the table.
+            law with the fitted A): at every speed of the table;
+  Yade,     dem/yade.py (ViscElMat, a linear spring-dashpot: constant
+            epsilon and contact time): as LIGGGHTS, if yade is installed
+            (--yade installs it).
 Prints epsilon and the contact time of the DEM code beside diskimpact's,
-and fails (exit 1) unless LIGGGHTS reproduces epsilon at the reference
-speed within --tolerance (1e-3).
+and fails (exit 1) unless LIGGGHTS (and Yade, where it ran) reproduces
+epsilon at the reference speed within --tolerance (1e-3).
 
-usage: bench/dem_check.py DIR [--tolerance 1e-3]
+usage: bench/dem_check.py DIR [--tolerance 1e-3] [--yade]
        (installs Debian's liggghts and lammps if missing)
 """
 import argparse
 import csv
 import json
 import os
+import shutil
 import subprocess
 import sys
 
@@ -31,9 +35,12 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("directory")
     parser.add_argument("--tolerance", type=float, default=1e-3)
+    parser.add_argument("--yade", action="store_true",
+                        help="install Yade if missing (a larger install)")
     args = parser.parse_args()
     subprocess.run([os.path.join(os.path.dirname(__file__),
-                                 "dem_check_deps.sh")],
+                                 "dem_check_deps.sh")] +
+                   (["--yade"] if args.yade else []),
                    check=True, stdout=subprocess.DEVNULL)
     with open(os.path.join(args.directory, "restitution_law.json")) as f:
         law = json.load(f)
@@ -69,14 +76,22 @@ def main():
         return results
 
     reference = (v_ref, law["dem"]["epsilon"], law["dem"]["contact_time_si"])
-    liggghts = run("liggghts", "liggghts.txt",
-                   [table[0], reference, table[-1]])
+    extremes = [table[0], reference, table[-1]]
+    checked = {"LIGGGHTS": run("liggghts", "liggghts.txt", extremes)}
     run("lammps", "lammps.txt", table)
-    error = abs(liggghts[1][2] - liggghts[1][1])
-    print(f"LIGGGHTS at the reference speed {v_ref:g} m/s: |eps_DEM - eps| = "
-          f"{error:.2e} (tolerance {args.tolerance:g})")
-    if not error <= args.tolerance:
-        sys.exit("dem_check: LIGGGHTS misses epsilon at the reference speed")
+    if shutil.which("yade"):
+        checked["Yade"] = run("yade", "yade.py", extremes)
+    else:
+        print("yade: not installed, skipped (bench/dem_check.py --yade "
+              "installs it)")
+    failed = False
+    for code, results in checked.items():
+        error = abs(results[1][2] - results[1][1])
+        print(f"{code} at the reference speed {v_ref:g} m/s: |eps_DEM - eps| "
+              f"= {error:.2e} (tolerance {args.tolerance:g})")
+        failed = failed or not error <= args.tolerance
+    if failed:
+        sys.exit("dem_check: a DEM code misses epsilon at the reference speed")
 
 
 if __name__ == "__main__":

@@ -1,14 +1,20 @@
 #!/bin/bash
 # Installs the DEM codes used by bench/dem_collision.py if they are missing
-# (Debian packages liggghts -> /usr/bin/liggghts and lammps -> /usr/bin/lmp)
-# and prints the paths of both binaries.
+# (Debian packages liggghts -> /usr/bin/liggghts and lammps -> /usr/bin/lmp;
+# with --yade also yade -> /usr/bin/yade, a larger install) and prints the
+# paths of the binaries.
 #
-# usage: bench/dem_check_deps.sh
+# usage: bench/dem_check_deps.sh [--yade]
 set -euo pipefail
 
+codes=(liggghts lmp)
+[ "${1:-}" = "--yade" ] && codes+=(yade)
 missing=()
 command -v liggghts >/dev/null || missing+=(liggghts)
 command -v lmp >/dev/null || missing+=(lammps)
+if [ "${1:-}" = "--yade" ] && ! command -v yade >/dev/null; then
+    missing+=(yade)
+fi
 
 if [ ${#missing[@]} -gt 0 ]; then
     sudo=""
@@ -18,7 +24,7 @@ if [ ${#missing[@]} -gt 0 ]; then
     $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y "${missing[@]}"
 fi
 
-for exe in liggghts lmp; do
+for exe in "${codes[@]}"; do
     path=$(command -v $exe) || { echo "error: $exe still missing" >&2; exit 1; }
     echo "$exe: $path"
 done

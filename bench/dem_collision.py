@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Head-on collision of two identical spheres in a DEM code (LIGGGHTS or LAMMPS).
+"""Head-on collision of two identical spheres in a DEM code (LIGGGHTS, LAMMPS or Yade).
 
 Two spheres of radius R and density rho (atom type 1) sit on the x axis,
 just apart, and move toward each other with speed v each (relative speed
@@ -15,23 +15,26 @@ are created and before the run:
              for E > 1e9 Pa in SI units)
   LAMMPS:    pair_style granular
              pair_coeff * * hertz/material E damp nu tangential ... damping ...
+  Yade:      mat = O.materials.append(ViscElMat(en=..., tc=..., ...)) (Python;
+             the generated script builds both spheres from 'mat')
 
-The time step is dt = t_H / 2000 with t_H the Hertz contact time
+The time step is dt = t_H / 2000 (Yade: tc / 2000, tc from the snippet)
+with t_H the Hertz contact time
 2.94328 (15 m v^2 / (16 E* sqrt(R)))^(2/5) / v, m the sphere mass and
 E* = E / (1 - nu^2) (E and nu parsed from youngsModulus / poissonsRatio,
 or from the numbers after hertz/material, dmt or jkr). That wall-equivalent
 time equals the one of the two-sphere problem. The spheres start 20 steps
 of travel apart and run 3 t_H beyond that.
 
-The centre gap d - 2R and both x-velocities are written every step through
-fix print. Then
+The centre gap d - 2R and both x-velocities are written every step (fix
+print; Yade: a PyRunner). Then
   epsilon      = -(v1x' - v2x') / (v1x - v2x), before = first line,
                  after = last line (the spheres must have separated),
   contact_time = time with d < 2R, from the first and last overlapping
                  steps, each end refined by linear interpolation of the gap
                  between the bracketing steps.
 
-usage: bench/dem_collision.py --code liggghts|lammps --snippet FILE
+usage: bench/dem_collision.py --code liggghts|lammps|yade --snippet FILE
                               --radius R --density RHO --speeds v1 [v2 ...]
                               [--work DIR]
        prints 'speed <v> epsilon <eps> contact_time <t_c>' per speed.
@@ -40,7 +43,7 @@ usage: bench/dem_collision.py --code liggghts|lammps --snippet FILE
 
 As a module: collide(code, snippet_text, radius, density, speed, work_dir)
 returns (epsilon, contact_time); hertz_time(...) gives t_H.
-bench/dem_check_deps.sh installs both codes.
+bench/dem_check_deps.sh installs the three codes.
 """
 import argparse
 import math
@@ -51,7 +54,7 @@ import subprocess
 import sys
 import tempfile
 
-BINARY = {"liggghts": "liggghts", "lammps": "lmp"}
+BINARY = {"liggghts": "liggghts", "lammps": "lmp", "yade": "yade"}
 STEPS_PER_CONTACT = 2000   # dt = t_H / STEPS_PER_CONTACT
 PRE_STEPS = 20             # steps of free travel before contact
 RUN_CONTACTS = 3           # run length after contact begins, in t_H
@@ -88,8 +91,56 @@ def hertz_time(radius, density, E, nu, speed):
                       / (16.0 * e_star * math.sqrt(radius)))**0.4 / speed
 
 
+def time_step(code, snippet, radius, density, speed):
+    """dt: the contact time of the snippet's law / STEPS_PER_CONTACT."""
+    if code == "yade":
+        tc = re.search(r"\btc\s*=\s*([^,)\s]+)", snippet)
+        if tc is None:
+            raise DEMError("cannot read tc from the yade snippet")
+        return float(tc.group(1)) / STEPS_PER_CONTACT
+    E, nu = material(code, snippet)
+    return hertz_time(radius, density, E, nu, speed) / STEPS_PER_CONTACT
+
+
+def yade_script(snippet, radius, speed, dt, steps, gap):
+    """Yade's script: the snippet defines 'mat'; a PyRunner writes the
+    history 'step gap v1x v2x'."""
+    x = radius + 0.5 * gap
+    return f"""\
+# ---- contact model (snippet) ----
+{snippet.strip()}
+# ---- end of snippet ----
+
+O.bodies.append([sphere((-{x!r}, 0, 0), {radius!r}, material=mat),
+                 sphere(({x!r}, 0, 0), {radius!r}, material=mat)])
+O.bodies[0].state.vel = Vector3({speed!r}, 0, 0)
+O.bodies[1].state.vel = Vector3(-{speed!r}, 0, 0)
+history = open("history.txt", "w")
+
+
+def record():
+    a, b = O.bodies[0].state, O.bodies[1].state
+    history.write("%d %r %r %r\\n" % (O.iter, (b.pos - a.pos).norm()
+                                      - {2 * radius!r}, a.vel[0], b.vel[0]))
+
+
+O.engines = [ForceResetter(),
+             InsertionSortCollider([Bo1_Sphere_Aabb()]),
+             InteractionLoop([Ig2_Sphere_Sphere_ScGeom()],
+                             [Ip2_ViscElMat_ViscElMat_ViscElPhys()],
+                             [Law2_ScGeom_ViscElPhys_Basic()]),
+             NewtonIntegrator(damping=0., gravity=(0, 0, 0)),
+             PyRunner(command="record()", iterPeriod=1)]
+O.dt = {dt!r}
+O.run({steps}, True)
+history.close()
+"""
+
+
 def input_script(code, snippet, radius, density, speed, dt, steps, gap):
     """The complete input script; fix print writes 'step gap v1x v2x'."""
+    if code == "yade":
+        return yade_script(snippet, radius, speed, dt, steps, gap)
     half = 4.0 * radius
     x = radius + 0.5 * gap
     if code == "liggghts":
@@ -161,7 +212,7 @@ def analyse(path, dt):
 def collide(code, snippet_text, radius, density, speed, work_dir=None):
     """Run one collision; returns (epsilon, contact_time)."""
     if code not in BINARY:
-        raise DEMError("unknown code %r (liggghts or lammps)" % code)
+        raise DEMError("unknown code %r (liggghts, lammps or yade)" % code)
     exe = shutil.which(BINARY[code])
     if exe is None:
         raise DEMError("%s binary '%s' not found on PATH (bench/"
@@ -171,13 +222,13 @@ def collide(code, snippet_text, radius, density, speed, work_dir=None):
         result = collide(code, snippet_text, radius, density, speed, tmp)
         shutil.rmtree(tmp)
         return result
-    E, nu = material(code, snippet_text)
-    dt = hertz_time(radius, density, E, nu, speed) / STEPS_PER_CONTACT
+    dt = time_step(code, snippet_text, radius, density, speed)
     steps = PRE_STEPS + RUN_CONTACTS * STEPS_PER_CONTACT
     gap = 2.0 * speed * PRE_STEPS * dt
     run_dir = os.path.join(work_dir, "%s_v%r" % (code, speed))
     os.makedirs(run_dir, exist_ok=True)
-    with open(os.path.join(run_dir, "in.collision"), "w") as f:
+    script = "collision.py" if code == "yade" else "in.collision"
+    with open(os.path.join(run_dir, script), "w") as f:
         f.write(input_script(code, snippet_text, radius, density, speed, dt,
                              steps, gap))
     history = os.path.join(run_dir, "history.txt")
@@ -185,8 +236,9 @@ def collide(code, snippet_text, radius, density, speed, work_dir=None):
         os.remove(history)
     log = os.path.join(run_dir, "run.log")
     with open(log, "w") as out:
-        rc = subprocess.call([exe, "-echo", "screen", "-log", "none",
-                              "-in", "in.collision"],
+        command = ([exe, "-n", "-x", script] if code == "yade" else
+                   [exe, "-echo", "screen", "-log", "none", "-in", script])
+        rc = subprocess.call(command,
                              cwd=run_dir, stdout=out, stderr=subprocess.STDOUT)
     tail = "".join(open(log, errors="replace").readlines()[-15:])
     if rc != 0 or not os.path.exists(history):
@@ -201,7 +253,8 @@ def collide(code, snippet_text, radius, density, speed, work_dir=None):
 def main():
     p = argparse.ArgumentParser(
         description="Coefficient of restitution and contact time of two "
-                    "identical spheres colliding head-on in LIGGGHTS or LAMMPS.")
+                    "identical spheres colliding head-on in LIGGGHTS, LAMMPS "
+                    "or Yade.")
     p.add_argument("--code", required=True, choices=sorted(BINARY))
     p.add_argument("--snippet", required=True,
                    help="file with the contact-model lines (SI units)")

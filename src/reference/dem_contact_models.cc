@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 namespace DiskImpact
 {
@@ -45,6 +46,57 @@ namespace DiskImpact
         boost::math::tools::eps_tolerance<double>(45),
         iterations);
       return 0.5 * (root.first + root.second);
+    }
+
+    namespace
+    {
+      /// epsilon and w_d t_c of the force-clipped linear spring-dashpot with
+      /// damping ratio zeta (see yade_viscel_collision()).
+      std::pair<double, double>
+      clipped_linear_collision(const double zeta)
+      {
+        const double root_1 = std::sqrt(1. - zeta * zeta);
+        const double b      = zeta / root_1;
+        const double phase =
+          M_PI - std::atan2(2. * zeta * root_1, 1. - 2. * zeta * zeta);
+        const double speed_ratio = b * std::sin(phase) - std::cos(phase);
+        return {std::exp(-b * phase) * speed_ratio,
+                phase + std::sin(phase) / speed_ratio};
+      }
+    } // namespace
+
+    LinearDashpotCollision
+    yade_viscel_collision(const double en, const double tc)
+    {
+      const double log_en = std::log(en);
+      const double zeta   = -log_en / std::sqrt(M_PI * M_PI + log_en * log_en);
+      const auto [epsilon, phase_time] = clipped_linear_collision(zeta);
+      return {epsilon, phase_time * tc / M_PI};
+    }
+
+    LinearDashpotCollision
+    yade_viscel_inputs(const double epsilon, const double contact_time)
+    {
+      if (!(epsilon > 0. && epsilon <= 1.))
+        throw std::domain_error("yade_viscel_inputs: epsilon outside (0, 1]");
+      if (epsilon >= 1. - 1e-14)
+        return {1., contact_time};
+      // epsilon falls monotonically with zeta, from 1 at zeta = 0 to 0
+      // at zeta = 1/sqrt(2) (th = pi/2, the force vanishes at once).
+      boost::uintmax_t iterations = 200;
+      const auto       root       = boost::math::tools::toms748_solve(
+        [&](const double zeta) {
+          return clipped_linear_collision(zeta).first - epsilon;
+        },
+        0.,
+        M_SQRT1_2,
+        boost::math::tools::eps_tolerance<double>(50),
+        iterations);
+      const double zeta = 0.5 * (root.first + root.second);
+      const double damped_frequency =
+        clipped_linear_collision(zeta).second / contact_time;
+      return {std::exp(-M_PI * zeta / std::sqrt(1. - zeta * zeta)),
+              M_PI / damped_frequency};
     }
 
     double

@@ -33,6 +33,37 @@ namespace DiskImpact
      * contact radius a = sqrt(R_eff d) equals A dF/dt = 2 A E_eff a d' of
      * seed 003 for eta_n0 = 2 A E_eff / m_eff.
      */
+    /// Restitution and contact time (overlap back to zero) of a collision.
+    struct LinearDashpotCollision
+    {
+      double epsilon;
+      double contact_time;
+    };
+
+    /**
+     * Yade's ViscElMat ('Law2_ScGeom_ViscElPhys_Basic'): a linear spring
+     * k d + c d' with k and c set from the inputs (en, tc) by the classical
+     * formulas of the undamped end (overlap back to zero), but a force that
+     * is never attractive: the collision ends when k d + c d' = 0, and the
+     * bodies fly apart from there. With the damping ratio
+     * zeta = -ln en / sqrt(pi^2 + ln^2 en), w_d = pi / tc and
+     * b = zeta / sqrt(1 - zeta^2), the force vanishes at the phase
+     * th = pi - atan2(2 zeta sqrt(1 - zeta^2), 1 - 2 zeta^2), so
+     *
+     *   epsilon = e^{-b th} (b sin th - cos th),
+     *   t_c     = (th + sin th / (b sin th - cos th)) / w_d,
+     *
+     * t_c counting the free flight until the overlap is zero. epsilon
+     * exceeds en (by 1.6e-4 at en = 0.97).
+     */
+    LinearDashpotCollision
+    yade_viscel_collision(double en, double tc);
+
+    /// The inputs (en, tc) of ViscElMat for which yade_viscel_collision()
+    /// gives @p epsilon (0 < epsilon <= 1) and @p contact_time.
+    LinearDashpotCollision
+    yade_viscel_inputs(double epsilon, double contact_time);
+
     double
     lammps_viscoelastic_damping(double dissipative_constant,
                                 double effective_modulus,

@@ -196,6 +196,7 @@ namespace DiskImpact
     {
       double radius, density, young, poisson, mass, speed, epsilon,
         contact_time, liggghts_restitution, liggghts_epsilon, A, lammps_damping;
+      Reference::LinearDashpotCollision yade; ///< ViscElMat's (en, tc)
     };
 
     std::map<std::string, std::string>
@@ -244,8 +245,11 @@ namespace DiskImpact
         "# Yade, ViscElMat (linear spring-dashpot from contact time and "
         "restitution)\n" +
         head.str() +
-        "mat = O.materials.append(ViscElMat(en=" + number(d.epsilon) +
-        ", et=0., tc=" + number(d.contact_time) +
+        "# ViscElMat's force is never attractive: its epsilon exceeds en "
+        "and its contact time differs\n# from tc. These en, tc give the "
+        "epsilon and contact time above, at every speed.\n"
+        "mat = O.materials.append(ViscElMat(en=" +
+        number(d.yade.epsilon) + ", et=0., tc=" + number(d.yade.contact_time) +
         ", density=" + number(d.density) + ", frictionAngle=0.))\n";
       files["mercurydpm.txt"] =
         "// MercuryDPM, LinearViscoelasticSpecies (particle-wall; for two "
@@ -390,12 +394,15 @@ namespace DiskImpact
           // E_eff and m_eff of the wall-equivalent pair: E* and m.
           d.lammps_damping = Reference::lammps_viscoelastic_damping(
             d.A, d.young / (1. - d.poisson * d.poisson), d.mass);
-          files = dem_files(d);
+          d.yade = Reference::yade_viscel_inputs(d.epsilon, d.contact_time);
+          files  = dem_files(d);
           dem_json << "{\"reference_speed_si\": " << number(d.speed)
                    << ", \"epsilon\": " << number(d.epsilon)
                    << ", \"contact_time_si\": " << number(d.contact_time)
                    << ", \"liggghts_coefficient_restitution\": "
                    << number(d.liggghts_restitution)
+                   << ", \"yade_viscelmat_en\": " << number(d.yade.epsilon)
+                   << ", \"yade_viscelmat_tc\": " << number(d.yade.contact_time)
                    << ", \"lammps_viscoelastic_eta_n0\": "
                    << number(d.lammps_damping)
                    << ", \"dissipative_constant_si\": " << number(d.A)

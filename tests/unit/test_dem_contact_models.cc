@@ -4,6 +4,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace DiskImpact::Reference;
@@ -25,18 +26,20 @@ TEST_CASE("LIGGGHTS' Hertz restitution: its epsilon and the input for it",
 TEST_CASE("LAMMPS' viscoelastic damping is seed 003's A dF/dt", "[dem]")
 {
   // A sphere on a wall, not unit-valued: E*, R, m, A, v.
-  const double e_star = 7.3, radius = 0.4, mass = 2.1, A = 0.03, v = 0.2;
-  const ForceLaw hertz{
-    [&](const double d) {
-      return d > 0. ? hertz_sphere_stiffness(e_star, radius) * std::pow(d, 1.5) :
-                      0.;
-    },
-    [&](const double d) {
-      return d > 0. ? 1.5 * hertz_sphere_stiffness(e_star, radius) *
-                        std::sqrt(d) :
-                      0.;
-    }};
-  const double eta = lammps_viscoelastic_damping(A, e_star, mass);
+  const double   e_star = 7.3, radius = 0.4, mass = 2.1, A = 0.03, v = 0.2;
+  const ForceLaw hertz{[&](const double d) {
+                         return d > 0. ?
+                                  hertz_sphere_stiffness(e_star, radius) *
+                                    std::pow(d, 1.5) :
+                                  0.;
+                       },
+                       [&](const double d) {
+                         return d > 0. ?
+                                  1.5 * hertz_sphere_stiffness(e_star, radius) *
+                                    std::sqrt(d) :
+                                  0.;
+                       }};
+  const double   eta = lammps_viscoelastic_damping(A, e_star, mass);
   // LAMMPS: eta_n0 a m_eff d' with a = sqrt(R_eff d).
   const auto lammps = [&](const double d, const double d_dot) {
     return d > 0. ? eta * std::sqrt(radius * d) * mass * d_dot : 0.;
@@ -46,4 +49,42 @@ TEST_CASE("LAMMPS' viscoelastic damping is seed 003's A dF/dt", "[dem]")
   CHECK(dem.epsilon == Approx(seed.epsilon).epsilon(1e-10));
   CHECK(dem.contact_time == Approx(seed.contact_time).epsilon(1e-10));
   CHECK(seed.epsilon < 0.99);
+}
+
+TEST_CASE("Yade's ViscElMat: the force-clipped linear spring-dashpot", "[dem]")
+{
+  // ViscElMat's k and c from (en, tc), integrated with a damping force cut
+  // so that the total force is never attractive, to the overlap's zero.
+  const double mass = 1.7, v = 0.3;
+  for (const double en : {0.2, 0.7, 0.9714911595, 0.9999})
+    {
+      const double   tc     = 2.3e-3;
+      const double   log_en = std::log(en);
+      const double   k = mass * (M_PI * M_PI + log_en * log_en) / (tc * tc);
+      const double   c = -2. * mass * log_en / tc;
+      const ForceLaw linear{[&](const double d) { return k * d; },
+                            [&](const double) { return k; }};
+      const auto     clipped = [&](const double d, const double d_dot) {
+        return std::max(c * d_dot, -k * d);
+      };
+      const auto unclipped = [&](const double, const double d_dot) {
+        return c * d_dot;
+      };
+      const auto yade =
+        collide(mass, v, linear, clipped, EndCriterion::overlap, 1e-14);
+      const auto classical =
+        collide(mass, v, linear, unclipped, EndCriterion::overlap, 1e-14);
+      CHECK(classical.epsilon == Approx(en).epsilon(1e-10));
+      CHECK(classical.contact_time == Approx(tc).epsilon(1e-10));
+
+      const auto model = yade_viscel_collision(en, tc);
+      CHECK(model.epsilon == Approx(yade.epsilon).epsilon(1e-10));
+      CHECK(model.contact_time == Approx(yade.contact_time).epsilon(1e-9));
+      CHECK(model.epsilon > en);
+
+      const auto inputs = yade_viscel_inputs(model.epsilon, model.contact_time);
+      CHECK(inputs.epsilon == Approx(en).epsilon(1e-12));
+      CHECK(inputs.contact_time == Approx(tc).epsilon(1e-12));
+    }
+  CHECK_THROWS(yade_viscel_inputs(0., 1.));
 }
