@@ -17,7 +17,12 @@ with tractions ~P/(rho R), which displace the contact region by
 
     D(a) = D0 + D1 ln(a/R)
 
-over a/R = 0.0025, 0.005, 0.01, 0.02 for each Poisson ratio.
+over a/R = 0.0025, 0.005, 0.01, 0.02 for each Poisson ratio, both with D1
+free and with D1 fixed at its derived value (docs/sphere.md)
+
+    D1 = -(1 - 2 nu)^2 / (2 pi (1 - nu)),
+
+which leaves D0 the only fitted constant.
 
 Per material, runs at n = 16 and 32 elements across the contact radius
 (grading 0.3) with penalty factors kappa = 400 and 1600, and one run at
@@ -90,12 +95,24 @@ def run(diskimpact, directory, nu, kappa, n, grading):
     return {c: np.array([float(r[c]) for r in rows]) for c in CONSTANTS}
 
 
-def fit(values, with_linear=False):
-    """(D0, D1) of D = D0 + D1 ln(a/R) [+ D2 a/R], least squares."""
+def derived_log_coefficient(nu):
+    """D1 of the first-order curvature correction of Boussinesq's field."""
+    return -(1.0 - 2.0 * nu) ** 2 / (2.0 * math.pi * (1.0 - nu))
+
+
+def fit(values, with_linear=False, fixed_log=None):
+    """(D0, D1) of D = D0 + D1 ln(a/R) [+ D2 a/R], least squares; with
+    fixed_log, D1 is that value and only D0 [and D2] are fitted."""
     a = np.array(CONTACT_RADII)
-    columns = [np.ones_like(a), np.log(a)] + ([a] if with_linear else [])
+    if fixed_log is not None:
+        values = values - fixed_log * np.log(a)
+    columns = ([np.ones_like(a)] + ([] if fixed_log is not None
+                                    else [np.log(a)])
+               + ([a] if with_linear else []))
     coefficients = np.linalg.lstsq(np.column_stack(columns), values,
                                    rcond=None)[0]
+    if fixed_log is not None:
+        return np.array([coefficients[0], fixed_log])
     return coefficients[:2]
 
 
@@ -112,16 +129,24 @@ def study(diskimpact, directory, nu):
     for c in CONSTANTS:
         best = extrapolated(runs[(400, 32, 0.3)][c], runs[(1600, 32, 0.3)][c])
         coarse = extrapolated(runs[(400, 16, 0.3)][c], runs[(1600, 16, 0.3)][c])
-        value = fit(best)
-        parts = {
-            "mesh": np.abs(value - fit(coarse)),
-            "grading": np.abs(fit(runs[(1600, 16, 0.15)][c])
-                              - fit(runs[(1600, 16, 0.3)][c])),
-            "penalty": np.abs(value - fit(runs[(1600, 32, 0.3)][c])),
-            "form": np.abs(value - fit(best, with_linear=True)),
-        }
-        residual = best - (value[0] + value[1] * np.log(CONTACT_RADII))
-        result[c] = (value, sum(parts.values()), parts, best, residual)
+        # the bar of D itself at each a: mesh, grading and penalty parts
+        bar = (np.abs(best - coarse)
+               + np.abs(runs[(1600, 16, 0.15)][c] - runs[(1600, 16, 0.3)][c])
+               + np.abs(best - runs[(1600, 32, 0.3)][c]))
+        for fixed in (None, derived_log_coefficient(nu)):
+            def fitted(values, with_linear=False):
+                return fit(values, with_linear, fixed)
+            value = fitted(best)
+            parts = {
+                "mesh": np.abs(value - fitted(coarse)),
+                "grading": np.abs(fitted(runs[(1600, 16, 0.15)][c])
+                                  - fitted(runs[(1600, 16, 0.3)][c])),
+                "penalty": np.abs(value - fitted(runs[(1600, 32, 0.3)][c])),
+                "form": np.abs(value - fitted(best, with_linear=True)),
+            }
+            residual = best - (value[0] + value[1] * np.log(CONTACT_RADII))
+            result[(c, fixed is not None)] = (value, sum(parts.values()),
+                                              parts, best, residual, bar)
     return result
 
 
@@ -136,21 +161,32 @@ def main():
     table = []
     for nu in [float(v) for v in a.poisson_ratios.split(",")]:
         result = study(os.path.abspath(a.diskimpact), a.output, nu)
-        for c in CONSTANTS:
-            value, error, parts, best, residual = result[c]
-            print(f"nu = {nu:4.2f}  {c:10s}  D0 = {value[0]: .4f} +- "
-                  f"{error[0]:.4f}   D1 = {value[1]: .5f} +- {error[1]:.5f}")
-            print("    D(a/R = " + ", ".join(f"{r:g}" for r in CONTACT_RADII)
-                  + ") = " + ", ".join(f"{v:.5f}" for v in best)
-                  + "; fit residuals " + ", ".join(f"{v:.1e}" for v in residual))
+        print(f"nu = {nu:4.2f}  derived D1 = "
+              f"{derived_log_coefficient(nu): .5f}")
+        for (c, fixed), (value, error, parts, best, residual,
+                         bar) in result.items():
+            label = "D1 derived" if fixed else "D1 fitted "
+            print(f"  {c:10s} {label}  D0 = {value[0]: .4f} +- "
+                  f"{error[0]:.4f}   D1 = {value[1]: .5f}" +
+                  ("" if fixed else f" +- {error[1]:.5f}"))
             print("    error parts (D0, D1): " + ", ".join(
-                f"{k} {v[0]:.1e} {v[1]:.1e}" for k, v in parts.items()))
-            table.append([nu, c, value[0], error[0], value[1], error[1]])
+                f"{k} {v[0]:.1e} {v[1]:.1e}" for k, v in parts.items())
+                + "; fit residuals " + ", ".join(f"{v:.1e}" for v in residual))
+            if not fixed:
+                print("    D(a/R = " + ", ".join(f"{r:g}" for r in
+                                                CONTACT_RADII)
+                      + ") = " + ", ".join(f"{v:.5f}" for v in best)
+                      + " +- " + ", ".join(f"{v:.1e}" for v in bar)
+                      + " (relative " + ", ".join(
+                          f"{b / abs(v):.1%}" for b, v in zip(bar, best))
+                      + ")")
+            table.append([nu, c, "derived" if fixed else "fitted", value[0],
+                          error[0], value[1], 0.0 if fixed else error[1]])
     with open(os.path.join(a.output, "sphere_contact_constants.csv"), "w",
               newline="") as f:
         w = csv.writer(f)
-        w.writerow(["poisson_ratio", "constant", "D0", "D0_error", "D1",
-                    "D1_error"])
+        w.writerow(["poisson_ratio", "constant", "D1_source", "D0",
+                    "D0_error", "D1", "D1_error"])
         w.writerows(table)
     print(f"wrote {a.output}/sphere_contact_constants.csv "
           f"({time.time() - start:.0f} s)")
