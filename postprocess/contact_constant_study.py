@@ -187,6 +187,26 @@ def kappa_fit(values):
     return c_inf, float(np.max(np.abs(values - (c_inf + b * t))))
 
 
+
+def error_budget(runs, fine, name):
+    """(value, parts) of the constant `name` from the runs of a study:
+    runs[(n, kappa)] the rows at the two loads x and 4x per mesh and penalty,
+    fine the row at the finer grading. value: 1/kappa fit per mesh and load,
+    linear in the load to x -> 0, finest mesh; parts: its error bar's terms
+    (mesh, grading, penalty fit, load extrapolation)."""
+    fits = {(n, i): kappa_fit(np.array([runs[(n, k)][i][name] for k in KAPPAS]))
+            for n in MESHES for i in range(2)}
+    # linear in the load: C(0) = C(x) - (C(4x) - C(x)) / 3
+    limit = {n: fits[(n, 0)][0] - (fits[(n, 1)][0] - fits[(n, 0)][0]) / 3.0
+             for n in MESHES}
+    value = limit[MESHES[-1]]
+    return value, dict(
+        mesh=abs(value - limit[MESHES[0]]),
+        grading=abs(fine[name] - runs[(MESHES[0], KAPPAS[-1])][0][name]),
+        penalty=max(r for _, r in fits.values()),
+        load=abs(value - fits[(MESHES[-1], 0)][0]))
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--diskimpact", default="build/diskimpact")
@@ -225,21 +245,13 @@ def main():
                   "contact edge is not on a node, the mesh term is unreliable")
         exact = exact_constants(nu2)
         for name in CONSTANTS:
-            fits = {(n, i): kappa_fit(np.array([runs[(n, k)][i][name] for k in KAPPAS]))
-                    for n in MESHES for i in range(2)}
-            # linear in the load: C(0) = C(x) - (C(4x) - C(x)) / 3
-            limit = {n: fits[(n, 0)][0] - (fits[(n, 1)][0] - fits[(n, 0)][0]) / 3.0
-                     for n in MESHES}
-            value = limit[MESHES[-1]]
-            mesh = abs(value - limit[MESHES[0]])
-            grading = abs(fine[name] - runs[(MESHES[0], KAPPAS[-1])][0][name])
-            penalty = max(r for _, r in fits.values())
-            load = abs(value - fits[(MESHES[-1], 0)][0])
-            error = mesh + grading + penalty + load
+            value, parts = error_budget(runs, fine, name)
+            mesh, grading, penalty, load = (parts[k] for k in
+                                            ("mesh", "grading", "penalty", "load"))
+            error = sum(parts.values())
             table.append(dict(model=model, nu=nu, nu2=nu2, constant=name,
                               value=value, uncertainty=error, exact=exact[name],
-                              deviation=value - exact[name], mesh=mesh,
-                              grading=grading, penalty=penalty, load=load,
+                              deviation=value - exact[name], **parts,
                               a_over_h_offset=node))
             print(f"{model:12s} nu={nu:<5} nu2={nu2:.4f} {name:10s} "
                   f"{value:+.6f} +- {error:.1e} (mesh {mesh:.1e}, grading "

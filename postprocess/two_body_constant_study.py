@@ -28,15 +28,12 @@ usage: two_body_constant_study.py [--diskimpact build/diskimpact] [-o DIR]
 """
 import argparse
 import csv
-import math
 import os
 import subprocess
 import time
 
-import numpy as np
-
 from contact_constant_study import (FINE_GRADING, GRADING, KAPPAS, MESHES, NUMERICS,
-                                    kappa_fit)
+                                    error_budget)
 
 TARGET_LOAD = 1e-6
 RATIOS = [1.0, 0.5, 0.25]
@@ -97,20 +94,11 @@ def study(exe, work, name, ratio):
                for (n, _), rs in runs.items() for r in rs)
     results = []
     for constant in CONSTANTS:
-        fits = {(n, i): kappa_fit(np.array([runs[(n, k)][i][constant] for k in KAPPAS]))
-                for n in MESHES for i in range(2)}
-        limit = {n: fits[(n, 0)][0] - (fits[(n, 1)][0] - fits[(n, 0)][0]) / 3.0
-                 for n in MESHES}
-        value = limit[MESHES[-1]]
-        mesh = abs(value - limit[MESHES[0]])
-        grading = abs(fine[constant] - runs[(MESHES[0], KAPPAS[-1])][0][constant])
-        penalty = max(r for _, r in fits.values())
-        load = abs(value - fits[(MESHES[-1], 0)][0])
+        value, parts = error_budget(runs, fine, constant)
         exact = runs[(MESHES[0], KAPPAS[0])][0][EXACT[constant]]
         results.append(dict(pair=name, radius_ratio=ratio, constant=constant,
-                            value=value, uncertainty=mesh + grading + penalty + load,
-                            derived=exact, deviation=value - exact, mesh=mesh,
-                            grading=grading, penalty=penalty, load=load,
+                            value=value, uncertainty=sum(parts.values()),
+                            derived=exact, deviation=value - exact, **parts,
                             load_x=loads[0], a_over_h_offset=node))
     return results
 

@@ -38,6 +38,12 @@ namespace DiskImpact
       KSPDestroy(&ksp);
   }
 
+  const FullMatrix<double> &
+  CondensedSolver::condensed_matrix() const
+  {
+    return s_matrix;
+  }
+
   unsigned int
   CondensedSolver::n_factorizations() const
   {
@@ -183,8 +189,7 @@ namespace DiskImpact
         double         length = 1.;
         Vector<double> trial(n);
         bool           decreased = false;
-        for (unsigned int cut = 0; cut < 20 && !decreased;
-             ++cut, length *= 0.5)
+        for (unsigned int cut = 0; cut < 20 && !decreased; ++cut, length *= 0.5)
           {
             trial = u_C;
             trial.add(-length, step);

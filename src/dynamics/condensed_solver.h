@@ -63,6 +63,10 @@ namespace DiskImpact
     solve(const dealii::PETScWrappers::MPI::Vector &b,
           dealii::PETScWrappers::MPI::Vector       &y);
 
+    /// S = E_C^T X on C (symmetrized), the matrix of solve_condensed().
+    const dealii::FullMatrix<double> &
+    condensed_matrix() const;
+
     /// x += X P.
     void
     add_columns(const dealii::Vector<double>       &P,

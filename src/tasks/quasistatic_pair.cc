@@ -28,6 +28,8 @@ namespace DiskImpact
           Reference::wall_contact_theory(parameters.geometry.is_axisymmetric())
             ->force_unit(pair.first.modulus, pair.first.radius))
       , domain_force(parameters.geometry.domain_share() * total_force)
+      , effective_radius(1. /
+                         (1. / pair.first.radius + 1. / pair.second.radius))
       , communicator(communicator)
       , triangulation(communicator,
                       Triangulation<2>::limit_level_difference_at_vertices)
@@ -39,7 +41,6 @@ namespace DiskImpact
     const RigidWall &wall     = parameters.contact.wall();
     const auto      &n        = wall.normal;
     const auto &[b1, b2]      = pair;
-    const double R_eff        = 1. / (1. / b1.radius + 1. / b2.radius);
     a_hertz = Reference::two_body_half_width(sphere, total_force, b1, b2);
     approach_scale = sphere ?
                        Reference::two_sphere_approach(total_force, b1, b2) :
@@ -63,8 +64,9 @@ namespace DiskImpact
     const WallLaw law =
       parameters.contact.penalty_law(Impact::contact_modulus(parameters),
                                      h_contact);
-    const double bound = law.reach() + 1.5 * a_hertz * a_hertz / R_eff;
-    zone               = std::make_unique<ContactZone>(
+    const double bound =
+      law.reach() + 1.5 * a_hertz * a_hertz / effective_radius;
+    zone = std::make_unique<ContactZone>(
       op, wall, law, geometry.center(), bound, true);
     std::vector<unsigned int> all(zone->candidate_dofs().size());
     std::iota(all.begin(), all.end(), 0u);
@@ -75,16 +77,6 @@ namespace DiskImpact
                                                communicator);
     solver->set_observed_dofs(zone->candidate_dofs());
     solver->add_dofs(all);
-    s_matrix.reinit(all.size(), all.size());
-    Vector<double> unit(all.size());
-    for (unsigned int j = 0; j < all.size(); ++j)
-      {
-        unit[j]                     = 1.;
-        const Vector<double> column = solver->observed_response(unit);
-        unit[j]                     = 0.;
-        for (unsigned int i = 0; i < all.size(); ++i)
-          s_matrix(i, j) = column[i];
-      }
 
     // Uniform body forces of P in total (the computed domain's share)
     // toward the other body, each divided by its discrete volume.
@@ -125,15 +117,13 @@ namespace DiskImpact
     const unsigned int n    = u_C.size();
     const auto         step = zone->step_force(
       u_C, u_C, ContactAverage::trapezoidal, 1., jacobian != nullptr);
-    const Vector<double> &P = step.force;
+    const Vector<double>     &P        = step.force;
+    const FullMatrix<double> &s_matrix = solver->condensed_matrix();
+    Vector<double>            sp(n);
+    s_matrix.vmult(sp, P);
     r.reinit(n + 1);
     for (unsigned int i = 0; i < n; ++i)
-      {
-        double sp = 0.;
-        for (unsigned int j = 0; j < n; ++j)
-          sp += s_matrix(i, j) * P[j];
-        r[i] = u_C[i] - y_C[i] - sp - s * t_C[i];
-      }
+      r[i] = u_C[i] - y_C[i] - sp[i] - s * t_C[i];
     r[n] = (t_C * P - domain_force) / domain_force;
     if (jacobian != nullptr)
       {
@@ -173,13 +163,11 @@ namespace DiskImpact
   QuasistaticPair::solve(const double       tolerance,
                          const unsigned int max_iterations)
   {
-    const unsigned int n     = y_C.size();
-    const auto        &b1    = pair.first;
-    const auto        &b2    = pair.second;
-    const double       R_eff = 1. / (1. / b1.radius + 1. / b2.radius);
+    const unsigned int n = y_C.size();
     // The gaps move with s one to one (t . b = 1 on the body's part of a
     // row, the partner's part does not move).
-    double s = -0.5 * a_hertz * a_hertz / R_eff - zone->smallest_gap(y_C);
+    double s =
+      -0.5 * a_hertz * a_hertz / effective_radius - zone->smallest_gap(y_C);
     Vector<double> u_C(n);
     for (unsigned int i = 0; i < n; ++i)
       u_C[i] = y_C[i] + s * t_C[i];
@@ -230,17 +218,13 @@ namespace DiskImpact
   PairContactPoint
   QuasistaticPair::results() const
   {
-    const auto        &geometry = parameters.geometry;
-    const auto        &n        = parameters.contact.wall().normal;
-    const double       R        = geometry.radius();
-    const auto         u        = op.create_ghosted(solution);
-    const ContactState state    = zone
-                                 ->step_force(solver->observe(solution),
-                                              solver->observe(solution),
-                                              ContactAverage::trapezoidal,
-                                              1.,
-                                              false)
-                                 .state;
+    const auto          &geometry = parameters.geometry;
+    const auto          &n        = parameters.contact.wall().normal;
+    const double         R        = geometry.radius();
+    const auto           u        = op.create_ghosted(solution);
+    const Vector<double> u_C      = solver->observe(solution);
+    const ContactState   state =
+      zone->step_force(u_C, u_C, ContactAverage::trapezoidal, 1., false).state;
     const double   mean_body    = op.mean_displacement(u, 0) * n;
     const double   mean_partner = op.mean_displacement(u, 1) * n;
     const Point<2> partner_contact =

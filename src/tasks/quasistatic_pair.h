@@ -104,7 +104,9 @@ namespace DiskImpact
     const double                                                    load;
     const std::pair<Reference::ContactBody, Reference::ContactBody> pair;
     const double                                                    total_force;
-    const double                                    domain_force;
+    const double domain_force;
+    /// 1 / (1 / R1 + 1 / R2).
+    const double                                    effective_radius;
     double                                          a_hertz        = 0.;
     double                                          approach_scale = 0.;
     MPI_Comm                                        communicator;
@@ -117,9 +119,8 @@ namespace DiskImpact
     dealii::PETScWrappers::MPI::Vector translation;
     /// y = K^{-1} f and the solution u = y + X P + s t.
     dealii::PETScWrappers::MPI::Vector y, solution;
-    /// y_C, t_C and S.
-    dealii::Vector<double>     y_C, t_C;
-    dealii::FullMatrix<double> s_matrix;
-    unsigned int               iterations = 0;
+    /// y_C and t_C (S is the solver's condensed_matrix()).
+    dealii::Vector<double> y_C, t_C;
+    unsigned int           iterations = 0;
   };
 } // namespace DiskImpact
