@@ -202,6 +202,9 @@ namespace DiskImpact
     require(!time_integrator.redistribute_mass(),
             "Time stepping: 'Contact mass = redistributed' is not available "
             "with 'Kind = body' in subsection Partner");
+    require(contact.law_kind() != WallLawKind::constraint,
+            "Contact: 'Law = constraint' is not available with 'Kind = body' "
+            "in subsection Partner");
     require(impact.revolved_view() == 0.,
             "Impact: 'Revolved view' is a single sphere's output: set it to "
             "0 with 'Kind = body' in subsection Partner");

@@ -53,7 +53,7 @@ namespace DiskImpact
   double
   WallLaw::pressure(const double gap) const
   {
-    if (!(gap < 0.))
+    if (!(gap < 0.) || kind == WallLawKind::constraint)
       return 0.;
     return kind == WallLawKind::penalty ? -stiffness * gap :
                                           threshold * std::exp(-decay * gap);
@@ -62,7 +62,7 @@ namespace DiskImpact
   double
   WallLaw::pressure_derivative(const double gap) const
   {
-    if (!(gap < 0.))
+    if (!(gap < 0.) || kind == WallLawKind::constraint)
       return 0.;
     return kind == WallLawKind::penalty ? -stiffness : -decay * pressure(gap);
   }
@@ -70,7 +70,7 @@ namespace DiskImpact
   double
   WallLaw::energy(const double gap) const
   {
-    if (!(gap < 0.))
+    if (!(gap < 0.) || kind == WallLawKind::constraint)
       return 0.;
     return kind == WallLawKind::penalty ?
              0.5 * stiffness * gap * gap :
@@ -80,8 +80,9 @@ namespace DiskImpact
   double
   WallLaw::reach() const
   {
-    return kind == WallLawKind::penalty ? 0. :
-                                          -std::log(exponential_cut) / decay;
+    return kind == WallLawKind::exponential ?
+             -std::log(exponential_cut) / decay :
+             0.;
   }
 
   double
@@ -125,14 +126,17 @@ namespace DiskImpact
                       "(penetration) is proportional to 1 / kappa.");
     prm.declare_entry("Law",
                       "penalty",
-                      Patterns::Selection("penalty|exponential"),
+                      Patterns::Selection("penalty|exponential|constraint"),
                       "The wall's pressure p on an edge point with gap g: "
                       "'penalty', p = k <-g>; 'exponential', the smooth wall "
                       "potential of seed 001 (eq. 41), energy (E2 R / alpha) "
                       "exp(alpha x / R) per unit edge length, x the distance "
                       "of the point beyond the wall plane, cut where the "
                       "pressure falls below 1e-16 E2 (the disk starts that "
-                      "far from the wall, 36.8 R / alpha).");
+                      "far from the wall, 36.8 R / alpha); 'constraint', no "
+                      "penetration at the edge nodes (g >= 0 exactly, the "
+                      "pressure a Lagrange multiplier; the contact zone's "
+                      "edge carries no mass, docs/impact-convergence.md).");
     prm.declare_entry("Potential stiffness",
                       "100",
                       Patterns::Double(),
@@ -156,9 +160,11 @@ namespace DiskImpact
   ContactParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Contact");
-    kappa = prm.get_double("Penalty factor");
-    kind  = prm.get("Law") == "exponential" ? WallLawKind::exponential :
-                                              WallLawKind::penalty;
+    kappa                      = prm.get_double("Penalty factor");
+    const std::string law_name = prm.get("Law");
+    kind  = law_name == "exponential" ? WallLawKind::exponential :
+            law_name == "constraint"  ? WallLawKind::constraint :
+                                        WallLawKind::penalty;
     alpha = prm.get_double("Potential stiffness");
     rigid_wall.point =
       Point<2>(parse_vector(prm.get("Wall point"), "Wall point"));
@@ -217,7 +223,9 @@ namespace DiskImpact
     if (kind == WallLawKind::penalty)
       return penalty_law(in_plane_young_modulus, h_contact);
     WallLaw law;
-    law.kind      = WallLawKind::exponential;
+    law.kind = kind;
+    if (kind == WallLawKind::constraint)
+      return law;
     law.decay     = alpha / radius;
     law.threshold = exponential_cut * in_plane_young_modulus;
     return law;

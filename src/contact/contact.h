@@ -33,8 +33,9 @@ namespace DiskImpact
   /// The two wall laws.
   enum class WallLawKind
   {
-    penalty,    ///< p = k <-g>
-    exponential ///< p = p_c exp(-lambda g) for g < 0 (seed 001, eq. 41)
+    penalty,     ///< p = k <-g>
+    exponential, ///< p = p_c exp(-lambda g) for g < 0 (seed 001, eq. 41)
+    constraint   ///< g >= 0 exactly, the pressure a Lagrange multiplier
   };
 
   /**
@@ -49,7 +50,10 @@ namespace DiskImpact
    *   the law's plane g = 0 lies a distance ln(E2 / p_c) / lambda in front
    *   of the wall plane, p = p_c exp(-lambda g) and energy
    *   (p_c / lambda)(exp(-lambda g) - 1) for g < 0, both zero for g >= 0
-   *   (the energy is continuous; the pressure jumps by p_c).
+   *   (the energy is continuous; the pressure jumps by p_c);
+   * - constraint: no penetration, g >= 0, with a pressure that does no
+   *   work (zero energy); its pressure is the complementarity problem's
+   *   solution (ContactZone::constraint_system()), not a function of g.
    */
   struct WallLaw
   {

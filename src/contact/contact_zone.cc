@@ -8,6 +8,7 @@
 #include "elasticity/elasticity_operator.h"
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/polynomial.h>
 #include <deal.II/base/quadrature_lib.h>
 
 #include <deal.II/fe/fe_values.h>
@@ -35,14 +36,25 @@ namespace DiskImpact
     const auto &dof_handler = op.get_dof_handler();
     const auto &fe          = dof_handler.get_fe();
     const auto &constraints = op.get_constraints();
-    // More points than the element needs: the pressure has a kink where
-    // contact ends inside a face.
-    const QGauss<1>                      quadrature(fe.degree + 3);
-    FEFaceValues<2>                      face_values(op.get_mapping(),
+    // More points than the element needs for a law: the pressure has a
+    // kink where contact ends inside a face. The constraint acts at the
+    // edge nodes, each with its share of the edge.
+    const bool          nodal = law.kind == WallLawKind::constraint;
+    const QGauss<1>     gauss(fe.degree + 3);
+    const Quadrature<1> quadrature =
+      nodal ? Quadrature<1>(fe.base_element(0).get_unit_face_support_points()) :
+              Quadrature<1>(gauss);
+    FEFaceValues<2> face_values(op.get_mapping(),
                                 fe,
                                 quadrature,
                                 update_values | update_quadrature_points |
                                   update_JxW_values);
+    FEFaceValues<2> gauss_values(op.get_mapping(),
+                                 fe,
+                                 gauss,
+                                 update_quadrature_points | update_JxW_values);
+    const auto      lagrange =
+      Polynomials::generate_complete_Lagrange_basis(quadrature.get_points());
     const FEValuesExtractors::Vector     displacement(0);
     std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
     const dealii::Point<2>               origin =
@@ -61,6 +73,22 @@ namespace DiskImpact
             }))
           return;
         cell->get_dof_indices(dof_indices);
+        // ds of each point: its JxW, or at a node the integral of its
+        // Lagrange polynomial along the face.
+        std::vector<double> ds(quadrature.size(), 0.);
+        if (nodal)
+          {
+            gauss_values.reinit(cell, f);
+            for (const unsigned int g : gauss_values.quadrature_point_indices())
+              for (unsigned int q = 0; q < quadrature.size(); ++q)
+                ds[q] +=
+                  lagrange[q].value(gauss.point(g)[0]) * gauss_values.JxW(g) *
+                  op.get_section().measure(gauss_values.quadrature_point(g));
+          }
+        else
+          for (const unsigned int q : face_values.quadrature_point_indices())
+            ds[q] = face_values.JxW(q) *
+                    op.get_section().measure(face_values.quadrature_point(q));
         for (const unsigned int q : face_values.quadrature_point_indices())
           {
             ConstrainedRow row;
@@ -70,9 +98,7 @@ namespace DiskImpact
                          face_values[displacement].value(i, q) * wall.normal,
                          row);
             local.insert(local.end(),
-                         {face_values.JxW(q) *
-                            op.get_section().measure(
-                              face_values.quadrature_point(q)),
+                         {ds[q],
                           wall.gap(x[q]),
                           (x[q] - origin) * along,
                           x[q][0],
@@ -104,6 +130,24 @@ namespace DiskImpact
               static_cast<types::global_dof_index>(part[k]), part[k + 1]);
           candidates.push_back(std::move(candidate));
         }
+    // A vertex shared by two faces is one node: one point, both shares.
+    if (nodal && !candidates.empty())
+      {
+        std::sort(candidates.begin(),
+                  candidates.end(),
+                  [](const Candidate &a, const Candidate &b) {
+                    return a.t < b.t;
+                  });
+        const double tolerance = 1e-9 * std::max(std::abs(candidates.front().t),
+                                                 std::abs(candidates.back().t));
+        std::vector<Candidate> nodes{candidates.front()};
+        for (std::size_t k = 1; k < candidates.size(); ++k)
+          if (candidates[k].x.distance(nodes.back().x) <= tolerance)
+            nodes.back().ds += candidates[k].ds;
+          else
+            nodes.push_back(std::move(candidates[k]));
+        candidates = std::move(nodes);
+      }
     if (with_partner)
       {
         // The gap is measured to the partner's edge, whose normal
@@ -302,5 +346,69 @@ namespace DiskImpact
               result.jacobian(i, j) += point.ds * dp_bar * bi * bj;
       }
     return result;
+  }
+
+  unsigned int
+  ContactZone::n_points() const
+  {
+    return points.size();
+  }
+
+  ContactZone::ConstraintSystem
+  ContactZone::constraint_system(const Vector<double> &u_C) const
+  {
+    ConstraintSystem system;
+    for (unsigned int k = 0; k < points.size(); ++k)
+      if (!points[k].active_row.empty())
+        system.points.push_back(k);
+    system.rows.reinit(system.points.size(), active.size());
+    system.gaps.reinit(system.points.size());
+    for (unsigned int r = 0; r < system.points.size(); ++r)
+      {
+        const Point &point = points[system.points[r]];
+        system.gaps[r]     = point.gap0;
+        for (const auto &[i, b] : point.active_row)
+          {
+            system.rows(r, i) += b;
+            system.gaps[r] += b * u_C[i];
+          }
+      }
+    return system;
+  }
+
+  Vector<double>
+  ContactZone::constraint_force(const std::vector<double> &mu) const
+  {
+    Vector<double> force(active.size());
+    for (unsigned int k = 0; k < points.size(); ++k)
+      if (mu[k] != 0.)
+        for (const auto &[i, b] : points[k].active_row)
+          force[i] += mu[k] * b;
+    return force;
+  }
+
+  ContactState
+  ContactZone::constraint_state(const std::vector<double> &mu0,
+                                const std::vector<double> &mu1,
+                                const Vector<double>      &u1,
+                                const double               new_weight) const
+  {
+    ContactState state;
+    state.axisymmetric = axisymmetric;
+    for (unsigned int k = 0; k < points.size(); ++k)
+      {
+        const Point &point = points[k];
+        state.force += mu1[k];
+        state.force_average += (1. - new_weight) * mu0[k] + new_weight * mu1[k];
+        state.second_moment += mu1[k] * point.t * point.t;
+        if (!point.active_row.empty())
+          {
+            double g = point.gap0;
+            for (const auto &[i, b] : point.active_row)
+              g += b * u1[i];
+            state.max_penetration = std::max(state.max_penetration, -g);
+          }
+      }
+    return state;
   }
 } // namespace DiskImpact

@@ -26,6 +26,10 @@ namespace DiskImpact
    * candidates' DoFs D (hanging-node constraints resolved), replicated on
    * every rank. The gap is g = g_0 + b . u_D.
    *
+   * With the law 'constraint' the candidates are the edge nodes instead,
+   * each with its share of the edge (the integral of its Lagrange
+   * polynomial) as ds, and their forces come from constraint_system().
+   *
    * The active DoFs C, a subset of D, are those of the points that have
    * touched the wall: only points with all their DoFs in C carry a force.
    * The step's contact force on C,
@@ -105,6 +109,40 @@ namespace DiskImpact
                ContactAverage                average,
                double                        new_weight,
                bool                          with_jacobian) const;
+
+    /// The number of candidate points.
+    unsigned int
+    n_points() const;
+
+    /**
+     * Law 'constraint': the gaps of the points that can carry a force
+     * (all their DoFs in C) as g = gaps + rows du_C, at the values @p u_C
+     * on C.
+     */
+    struct ConstraintSystem
+    {
+      std::vector<unsigned int>  points; ///< indices of those points
+      dealii::FullMatrix<double> rows;   ///< d g / d u_C, one row each
+      dealii::Vector<double>     gaps;   ///< g at u_C
+    };
+    ConstraintSystem
+    constraint_system(const dealii::Vector<double> &u_C) const;
+
+    /// sum_q mu_q b_q on C: the force on C of the point forces @p mu (one
+    /// per candidate point; zero where it cannot act).
+    dealii::Vector<double>
+    constraint_force(const std::vector<double> &mu) const;
+
+    /**
+     * What the constraint's point forces say of the contact: the step's
+     * forces @p mu0 (start) and @p mu1 (end) averaged with the weight
+     * @p new_weight of the end, and the end gaps at @p u1 (on C).
+     */
+    ContactState
+    constraint_state(const std::vector<double>    &mu0,
+                     const std::vector<double>    &mu1,
+                     const dealii::Vector<double> &u1,
+                     double                        new_weight) const;
 
   private:
     /// One candidate quadrature point.

@@ -2,6 +2,7 @@
 
 #include "base/parameters.h"
 #include "base/run_error.h"
+#include "contact/complementarity.h"
 #include "output/atomic_file.h"
 #include "output/hdf5_output.h"
 #include "output/state_output.h"
@@ -179,20 +180,6 @@ namespace DiskImpact
     impact.create_mesh(parameters, triangulation);
     op.setup(triangulation, geometry, true);
     const bool pair = parameters.partner.is_body();
-    // No inertia on the edge within the uniformly refined contact zone.
-    if (parameters.time_integrator.redistribute_mass())
-      op.set_massless_edge_zone(geometry.contact_point(),
-                                1.5 * largest_half_width);
-    op.assemble(materials());
-    summary.massless_dofs = op.n_massless_dofs();
-    summary.n_dofs        = op.get_dof_handler().n_dofs();
-    // The modes to project on, of the operator the time stepping uses.
-    if (with_outputs && impact.projected_modes > 0 && !pair)
-      projection = std::make_unique<ModalProjection>(
-        op,
-        geometry,
-        std::pow(material.transverse_wave_speed() / R, 2),
-        impact.projected_modes);
     // The candidates for contact: edge points whose undeformed gap is
     // below the law's reach plus three times the largest approach the
     // 1-DOF model expects (or the Hertz zone's own gap a^2 / 2R, if
@@ -209,6 +196,26 @@ namespace DiskImpact
       law.reach() +
       3. * std::max(estimate.largest_compression,
                     largest_half_width * largest_half_width / (2. * R));
+    // No inertia on the edge within the uniformly refined contact zone;
+    // with the constraint, on all the candidates' faces (their undeformed
+    // gap t^2 / 2R is below the bound).
+    if (law.kind == WallLawKind::constraint)
+      op.set_massless_edge_zone(geometry.contact_point(),
+                                1.5 * std::max(largest_half_width,
+                                               std::sqrt(2. * R * bound)));
+    else if (parameters.time_integrator.redistribute_mass())
+      op.set_massless_edge_zone(geometry.contact_point(),
+                                1.5 * largest_half_width);
+    op.assemble(materials());
+    summary.massless_dofs = op.n_massless_dofs();
+    summary.n_dofs        = op.get_dof_handler().n_dofs();
+    // The modes to project on, of the operator the time stepping uses.
+    if (with_outputs && impact.projected_modes > 0 && !pair)
+      projection = std::make_unique<ModalProjection>(
+        op,
+        geometry,
+        std::pow(material.transverse_wave_speed() / R, 2),
+        impact.projected_modes);
     zone = std::make_unique<ContactZone>(
       op, parameters.contact.wall(), law, geometry.center(), bound, pair);
     if (pair)
@@ -222,6 +229,8 @@ namespace DiskImpact
     for (auto *x : {&u, &v, &a, &u_new, &v_new, &a_new, &along_normal, &b, &y})
       *x = op.create_vector();
     u_D.reinit(zone->candidate_dofs().size());
+    point_forces.assign(zone->n_points(), 0.);
+    point_forces_new   = point_forces;
     work               = op.create_vector();
     product            = op.create_vector();
     const auto &normal = parameters.contact.wall().normal;
@@ -335,6 +344,21 @@ namespace DiskImpact
     const Vector<double> y_D  = solver->observe(y);
     Vector<double>       u1_D = y_D;
     Vector<double>       P;
+    if (parameters.contact.law_kind() == WallLawKind::constraint)
+      {
+        if (!attempt_constrained_step(y_D, u1_D, P))
+          return false;
+        u_new = y;
+        if (P.size() > 0)
+          solver->add_columns(P, u_new);
+        constraints.distribute(u_new);
+        state    = zone->constraint_state(point_forces,
+                                       point_forces_new,
+                                       zone->restrict_to_active(u1_D),
+                                       integrator.contact_new_weight());
+        u1_D_new = u1_D;
+        return true;
+      }
     for (;;)
       {
         // Points that touch at the start, the contact-free end or the end
@@ -387,6 +411,61 @@ namespace DiskImpact
     return true;
   }
 
+  bool
+  ImpactSimulation::attempt_constrained_step(const Vector<double> &y_D,
+                                             Vector<double>       &u1_D,
+                                             Vector<double>       &P)
+  {
+    // The contact DoFs carry no mass: at each step's end they are in
+    // equilibrium with the point forces mu1 there, so the step force is
+    // P = af F(mu0) + (1 - af) F(mu1), the end state u1 = y + X P and its
+    // gaps g = q + W mu1 with W = (1 - af) B S B^T: a complementarity
+    // problem on the points that can touch (docs/impact-convergence.md).
+    const double new_weight = parameters.time_integrator.contact_new_weight();
+    for (;;)
+      {
+        const auto missing = zone->dofs_to_activate({&u_D, &y_D, &u1_D});
+        zone->activate(missing);
+        solver->add_dofs(missing);
+        point_forces_new.assign(zone->n_points(), 0.);
+        if (zone->n_active_dofs() == 0)
+          return true;
+        const Vector<double> F0 = zone->constraint_force(point_forces);
+        Vector<double> base_C = zone->restrict_to_active(y_D); // y_C + af S F0
+        Vector<double> s_f0(F0.size());
+        solver->condensed_matrix().vmult(s_f0, F0);
+        base_C.add(1. - new_weight, s_f0);
+        const auto system = zone->constraint_system(base_C);
+        // W = (1 - af) B S B^T.
+        const unsigned int n = system.points.size();
+        FullMatrix<double> sbt(solver->n_contact_dofs(), n), W(n, n);
+        solver->condensed_matrix().mTmult(sbt, system.rows);
+        system.rows.mmult(W, sbt);
+        W *= new_weight;
+        std::vector<bool> warm(n);
+        for (unsigned int r = 0; r < n; ++r)
+          warm[r] = point_forces[system.points[r]] > 0.;
+        const auto solution =
+          solve_complementarity(W,
+                                system.gaps,
+                                parameters.time_integrator.newton_tolerance() *
+                                  approach_estimate,
+                                warm);
+        if (!solution.converged)
+          return false;
+        summary.newton_iterations += solution.iterations;
+        for (unsigned int r = 0; r < n; ++r)
+          point_forces_new[system.points[r]] = solution.force[r];
+        P = F0;
+        P *= 1. - new_weight;
+        P.add(new_weight, zone->constraint_force(point_forces_new));
+        u1_D = y_D;
+        u1_D += solver->observed_response(P);
+        if (zone->dofs_to_activate({&u1_D}).empty())
+          return true;
+      }
+  }
+
   void
   ImpactSimulation::advance()
   {
@@ -418,6 +497,7 @@ namespace DiskImpact
     v   = v_new;
     a   = a_new;
     u_D = u1_D_new;
+    point_forces.swap(point_forces_new);
     t += dt;
     ++summary.steps;
   }
@@ -615,7 +695,7 @@ namespace DiskImpact
              "energy conserving or lower 'Time step fraction'");
     // The quasistatic 1-DOF model (log law) is no good reference for the
     // exponential wall, nor beyond the log law's range (NaN).
-    if (parameters.contact.law_kind() != WallLawKind::penalty)
+    if (parameters.contact.law_kind() == WallLawKind::exponential)
       return;
     for (const auto &[name, fe, one_dof] :
          std::vector<std::tuple<std::string, double, double>>{

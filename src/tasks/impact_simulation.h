@@ -57,6 +57,12 @@ namespace DiskImpact
     /// Newton's method for the step from (u, v, a); false if it fails.
     bool
     attempt_step();
+    /// attempt_step()'s contact for the law 'constraint': the end state's
+    /// point forces from the complementarity problem on the active points.
+    bool
+    attempt_constrained_step(const dealii::Vector<double> &y_D,
+                             dealii::Vector<double>       &u1_D,
+                             dealii::Vector<double>       &P);
     /// Take one step, halving it (and refactorizing) after a Newton failure.
     void
     advance();
@@ -122,7 +128,10 @@ namespace DiskImpact
     dealii::PETScWrappers::MPI::Vector u, v, a, u_new, v_new, a_new,
       along_normal, normal_momentum, b, y;
     /// u on the contact candidates' DoFs, at the step's start and end.
-    dealii::Vector<double>                     u_D, u1_D_new;
+    dealii::Vector<double> u_D, u1_D_new;
+    /// Law 'constraint': the point forces at the step's start and end.
+    std::vector<double>                        point_forces, point_forces_new;
+    std::vector<bool>                          contact_support;
     mutable dealii::PETScWrappers::MPI::Vector work, product;
     double                                     normal_mass    = 0.;
     double                                     energy_initial = 0.;

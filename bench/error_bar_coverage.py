@@ -1,0 +1,85 @@
+#!/usr/bin/python3
+"""Do the error bars hold? The 14 standard points of docs/impact-convergence.md.
+
+For plane stress nu = 0.33 (params/impact_convergence.prm, quadratic, three
+mesh levels) and plane strain nu2 = 0.9 (params/impact_convergence_plane_strain.prm,
+quartic, two mesh levels) at v/c = 0.005, 0.01, 0.02, 0.05, 0.1, 0.2, 0.3:
+runs the study as shipped (epsilon +- bar), then the same study with one
+more mesh level, and prints whether the finer level's epsilon lies within
+the shipped bar. Each study on 2 MPI ranks; prints one row per point and a
+Markdown table at the end.
+
+usage: bench/error_bar_coverage.py [--speeds 0.005,0.1] [--models stress,strain]
+                                   [--diskimpact build/diskimpact]
+       (build first; about 12 minutes for all 14 points on 2 cores)
+"""
+import argparse
+import csv
+import os
+import re
+import subprocess
+import tempfile
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+MODELS = {
+    "stress": ("plane stress nu = 0.33", "params/impact_convergence.prm"),
+    "strain": ("plane strain nu2 = 0.9", "params/impact_convergence_plane_strain.prm"),
+}
+
+
+def study(diskimpact, template, velocity, extra_levels, directory):
+    """Run the study of @template at @velocity with its mesh levels plus
+    @extra_levels; return (levels, wall seconds)."""
+    text = open(os.path.join(ROOT, template)).read()
+    levels = int(re.search(r"set Mesh levels\s*=\s*(\d+)", text).group(1))
+    text = re.sub(r"set Mesh levels\s*=\s*\d+",
+                  f"set Mesh levels = {levels + extra_levels}", text)
+    text = re.sub(r"set Velocity\s*=\s*[0-9.eE+-]+", f"set Velocity = {velocity}", text)
+    text = re.sub(r"set Output directory\s*=.*", f"set Output directory = {directory}", text)
+    prm = os.path.join(directory + ".prm")
+    open(prm, "w").write(text)
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    start = time.time()
+    subprocess.run(["mpirun", "-np", "2", diskimpact, prm],
+                   check=True, stdout=subprocess.DEVNULL, env=env)
+    return levels + extra_levels, time.time() - start
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--speeds", default="0.005,0.01,0.02,0.05,0.1,0.2,0.3")
+    parser.add_argument("--models", default="stress,strain")
+    parser.add_argument("--diskimpact", default=os.path.join(ROOT, "build", "diskimpact"))
+    args = parser.parse_args()
+    rows = []
+    with tempfile.TemporaryDirectory() as work:
+        for model in args.models.split(","):
+            name, template = MODELS[model]
+            for v in args.speeds.split(","):
+                shipped = os.path.join(work, f"{model}_{v}")
+                finer = shipped + "_finer"
+                _, seconds = study(args.diskimpact, template, v, 0, shipped)
+                total = next(r for r in csv.DictReader(open(os.path.join(shipped, "epsilon_estimate.csv")))
+                             if r["factor"] == "total")
+                epsilon, bar = float(total["limit"]), float(total["error"])
+                levels, finer_seconds = study(args.diskimpact, template, v, 1, finer)
+                runs = list(csv.DictReader(open(os.path.join(finer, "impact_convergence.csv"))))
+                finest = next(float(r["epsilon"]) for r in runs
+                              if r["factor"] == "mesh" and int(r["level"]) == levels - 1)
+                row = (name, v, epsilon, bar, seconds, finest, abs(finest - epsilon),
+                       abs(finest - epsilon) <= bar, finer_seconds)
+                rows.append(row)
+                print(f"{name}, v = {v} c: {epsilon:.8f} +- {bar:.2e} ({seconds:.1f} s); "
+                      f"level {levels - 1}: {finest:.8f}, distance {row[6]:.2e}, "
+                      f"{'inside' if row[7] else 'OUTSIDE'} ({finer_seconds:.1f} s)", flush=True)
+    print("\n| model | v/c | ε ± bar (shipped) | wall | one level finer | distance | inside |")
+    print("|---|---|---|---|---|---|---|")
+    for name, v, eps, bar, s, fine, dist, inside, _ in rows:
+        print(f"| {name} | {v} | {eps:.6f} ± {bar:.1e} | {s:.1f} s | {fine:.6f} | {dist:.1e} | "
+              f"{'yes' if inside else 'no'} |")
+    print(f"\n{sum(r[7] for r in rows)} of {len(rows)} bars contain the finer level")
+
+
+if __name__ == "__main__":
+    main()
