@@ -131,4 +131,56 @@ namespace DiskImpact
     result.gap = gaps(W, q, mu);
     return result;
   }
+
+  Vector<double>
+  mean_along_segment(const FullMatrix<double> &W,
+                     const Vector<double>     &q0,
+                     const Vector<double>     &q1,
+                     const double              tolerance)
+  {
+    const unsigned int n = q0.size();
+    Vector<double>     dq(q1), mean(n);
+    dq -= q0;
+    auto q_at = [&](const double s) {
+      Vector<double> q(q0);
+      q.add(s, dq);
+      return q;
+    };
+    // Just past s the support is settled: a force that starts at zero
+    // there is on it only if it grows.
+    auto support_after = [&](const double s) {
+      const double      ahead = s + 1e-9 * (1. - s);
+      const auto        mu = solve_complementarity(W, q_at(ahead), tolerance);
+      std::vector<bool> support(n);
+      for (unsigned int i = 0; i < n; ++i)
+        support[i] = mu.force[i] > 0.;
+      return support;
+    };
+    double s = 0.;
+    for (unsigned int piece = 0; piece < 4 * n + 10 && s < 1.; ++piece)
+      {
+        const auto support = support_after(s);
+        // mu(t) = z0 + t zd on this piece, the gaps g(t) = g0 + t gd.
+        const Vector<double> z0 = solve_on_set(W, q0, support);
+        const Vector<double> zd = solve_on_set(W, dq, support);
+        Vector<double>       g0 = gaps(W, q0, z0), gd(dq);
+        W.vmult_add(gd, zd);
+        double end = 1.;
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const double slope = support[i] ? zd[i] : gd[i];
+            const double value = support[i] ? z0[i] : g0[i];
+            if (slope < 0.)
+              {
+                const double t = -value / slope;
+                if (t > s + 1e-12)
+                  end = std::min(end, t);
+              }
+          }
+        // The mean of the linear mu over [s, end].
+        mean.add(end - s, z0, (end - s) * 0.5 * (s + end), zd);
+        s = end;
+      }
+    return mean;
+  }
 } // namespace DiskImpact

@@ -35,4 +35,16 @@ namespace DiskImpact
                         const dealii::Vector<double>     &q,
                         double                            tolerance,
                         const std::vector<bool>          &warm_start = {});
+  /**
+   * The mean over s in [0, 1] of the solution mu(s) of the problem with
+   * q(s) = (1 - s) @p q0 + s @p q1 and W fixed. mu(s) is piecewise linear
+   * in s: on each piece mu = -W_PP^{-1} q_P(s) on its support P, and a
+   * piece ends where a force falls to zero or a gap closes. The mean is
+   * summed piece by piece, exact to rounding.
+   */
+  dealii::Vector<double>
+  mean_along_segment(const dealii::FullMatrix<double> &W,
+                     const dealii::Vector<double>     &q0,
+                     const dealii::Vector<double>     &q1,
+                     double                            tolerance);
 } // namespace DiskImpact

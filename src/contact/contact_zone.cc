@@ -354,6 +354,36 @@ namespace DiskImpact
     return points.size();
   }
 
+  std::vector<std::vector<std::pair<unsigned int, double>>>
+  ContactZone::point_rows() const
+  {
+    std::vector<std::vector<std::pair<unsigned int, double>>> rows;
+    for (const Point &point : points)
+      rows.push_back(point.row);
+    return rows;
+  }
+
+  Vector<double>
+  ContactZone::point_gaps(const Vector<double> &u) const
+  {
+    Vector<double> gaps(points.size());
+    for (unsigned int k = 0; k < points.size(); ++k)
+      gaps[k] = gap(points[k], u);
+    return gaps;
+  }
+
+  std::vector<unsigned int>
+  ContactZone::inactive_dofs_of(const Vector<double> &mu) const
+  {
+    std::set<unsigned int> missing;
+    for (unsigned int k = 0; k < points.size(); ++k)
+      if (mu[k] != 0.)
+        for (const auto &entry : points[k].row)
+          if (active_position[entry.first] < 0)
+            missing.insert(entry.first);
+    return {missing.begin(), missing.end()};
+  }
+
   ContactZone::ConstraintSystem
   ContactZone::constraint_system(const Vector<double> &u_C) const
   {

@@ -113,6 +113,16 @@ namespace DiskImpact
     /// The number of candidate points.
     unsigned int
     n_points() const;
+    /// Each point's gap row b: (position in D, b).
+    std::vector<std::vector<std::pair<unsigned int, double>>>
+    point_rows() const;
+    /// Each point's gap for the values @p u on D.
+    dealii::Vector<double>
+    point_gaps(const dealii::Vector<double> &u) const;
+    /// The DoFs (positions in D) not yet in C of the points whose entry in
+    /// @p mu is not zero.
+    std::vector<unsigned int>
+    inactive_dofs_of(const dealii::Vector<double> &mu) const;
 
     /**
      * Law 'constraint': the gaps of the points that can carry a force

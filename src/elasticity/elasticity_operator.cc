@@ -154,6 +154,52 @@ namespace DiskImpact
                                dof_handler.get_communicator());
   }
 
+  std::vector<types::global_dof_index>
+  ElasticityOperator::massless_dof_list() const
+  {
+    std::vector<types::global_dof_index> local;
+    for (const auto dof : massless_dofs)
+      if (owned_dofs.is_element(dof))
+        local.push_back(dof);
+    std::vector<types::global_dof_index> all;
+    for (const auto &part :
+         Utilities::MPI::all_gather(dof_handler.get_communicator(), local))
+      all.insert(all.end(), part.begin(), part.end());
+    std::sort(all.begin(), all.end());
+    return all;
+  }
+
+  FullMatrix<double>
+  ElasticityOperator::stiffness_block(
+    const std::vector<types::global_dof_index> &dofs) const
+  {
+    // (row, column, value) of this rank's rows, then everyone's.
+    std::vector<double> local;
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      if (owned_dofs.is_element(dofs[i]))
+        for (auto entry = stiffness.begin(dofs[i]);
+             entry != stiffness.end(dofs[i]);
+             ++entry)
+          {
+            const auto j =
+              std::lower_bound(dofs.begin(), dofs.end(), entry->column()) -
+              dofs.begin();
+            if (j < static_cast<long>(dofs.size()) &&
+                dofs[j] == entry->column())
+              local.insert(local.end(),
+                           {static_cast<double>(i),
+                            static_cast<double>(j),
+                            entry->value()});
+          }
+    FullMatrix<double> block(dofs.size(), dofs.size());
+    for (const auto &part :
+         Utilities::MPI::all_gather(dof_handler.get_communicator(), local))
+      for (std::size_t k = 0; k < part.size(); k += 3)
+        block(static_cast<unsigned int>(part[k]),
+              static_cast<unsigned int>(part[k + 1])) = part[k + 2];
+    return block;
+  }
+
   void
   ElasticityOperator::redistribute_cell_mass(
     const std::vector<types::global_dof_index> &dof_indices,

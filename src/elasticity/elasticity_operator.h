@@ -76,6 +76,15 @@ namespace DiskImpact
     /// The number of DoFs without inertia (set_massless_edge_zone()).
     unsigned int
     n_massless_dofs() const;
+    /// The DoFs without inertia, sorted, the same list on every rank.
+    /// Collective.
+    std::vector<dealii::types::global_dof_index>
+    massless_dof_list() const;
+    /// The block K(dofs, dofs) of the stiffness matrix for a sorted list
+    /// @p dofs, the same on every rank. Collective.
+    dealii::FullMatrix<double>
+    stiffness_block(
+      const std::vector<dealii::types::global_dof_index> &dofs) const;
 
     /// Assemble M (rho u.v) and K (eps(u) : C : eps(v)), and for a viscous
     /// material the damping matrix (eps(u) : D : eps(v), Kelvin-Voigt);

@@ -218,6 +218,13 @@ namespace DiskImpact
         impact.projected_modes);
     zone = std::make_unique<ContactZone>(
       op, parameters.contact.wall(), law, geometry.center(), bound, pair);
+    if (law.kind == WallLawKind::constraint &&
+        parameters.time_integrator.conserves_energy())
+      {
+        massless   = std::make_unique<MasslessZone>(op, zone->candidate_dofs());
+        point_rows = zone->point_rows();
+        static_compliance = massless->compliance(point_rows);
+      }
     if (pair)
       bodies =
         std::make_unique<BodyMotion>(op, parameters.contact.wall().normal, 2);
@@ -346,16 +353,50 @@ namespace DiskImpact
     Vector<double>       P;
     if (parameters.contact.law_kind() == WallLawKind::constraint)
       {
-        if (!attempt_constrained_step(y_D, u1_D, P))
-          return false;
+        // The trapezoidal step, then (energy conserving) the exact mean
+        // along the step: the DoFs with mass see the mean point forces
+        // instead of (mu0 + mu1) / 2. Their difference dmu, held by the
+        // massless zone, moves the end state by
+        // A^{-1} (-K_IM e) = X B^T dmu - 2 e, e = K_MM^{-1} B^T dmu (the
+        // massless rows of A are K / 2): no further solve with A.
+        Vector<double> applied(zone->n_points());
+        Vector<double> y_D_corrected = y_D;
+        for (unsigned int pass = 0;; ++pass)
+          {
+            if (!attempt_constrained_step(y_D_corrected, u1_D, P))
+              return false;
+            if (!massless || pass == integrator.max_newton_iterations())
+              break;
+            if (mean_force_correction(u1_D, applied).linfty_norm() == 0.)
+              break;
+            const auto missing = zone->inactive_dofs_of(applied);
+            zone->activate(missing);
+            solver->add_dofs(missing);
+            y_D_corrected = y_D;
+            y_D_corrected += solver->observed_response(zone->constraint_force(
+              std::vector<double>(applied.begin(), applied.end())));
+            y_D_corrected.add(-2.,
+                              massless->response_on_candidates(point_rows,
+                                                               applied));
+          }
+        if (applied.linfty_norm() > 0.)
+          {
+            solver->add_columns(zone->constraint_force(std::vector<double>(
+                                  applied.begin(), applied.end())),
+                                y);
+            massless->add_response(point_rows, applied, -2., y);
+          }
         u_new = y;
         if (P.size() > 0)
           solver->add_columns(P, u_new);
         constraints.distribute(u_new);
-        state    = zone->constraint_state(point_forces,
+        state = zone->constraint_state(point_forces,
                                        point_forces_new,
                                        zone->restrict_to_active(u1_D),
                                        integrator.contact_new_weight());
+        // The mean force's share beyond the trapezoidal one.
+        for (const double dmu : applied)
+          state.force_average += dmu;
         u1_D_new = u1_D;
         return true;
       }
@@ -464,6 +505,41 @@ namespace DiskImpact
         if (zone->dofs_to_activate({&u1_D}).empty())
           return true;
       }
+  }
+
+  Vector<double>
+  ImpactSimulation::mean_force_correction(const Vector<double> &u1_D,
+                                          Vector<double>       &applied) const
+  {
+    // Along the step the DoFs with mass move on a straight line, so the
+    // massless zone's gaps without contact forces, q = g - W_s mu, are
+    // linear in s from the start to the end state; the forces mu(s) solve
+    // the static complementarity problem with them. AVF: the step force is
+    // their mean, where the trapezoidal step used (mu0 + mu1) / 2.
+    const unsigned int n = zone->n_points();
+    Vector<double>     mu0(point_forces.begin(), point_forces.end()),
+      mu1(point_forces_new.begin(), point_forces_new.end());
+    Vector<double> q0 = zone->point_gaps(u_D), q1 = zone->point_gaps(u1_D);
+    static_compliance.vmult_add(q0, mu0 *= -1.);
+    static_compliance.vmult_add(q1, mu1 *= -1.);
+    Vector<double> target =
+      mean_along_segment(static_compliance,
+                         q0,
+                         q1,
+                         parameters.time_integrator.newton_tolerance() *
+                           approach_estimate);
+    // mu0, mu1 hold -mu here.
+    target.add(0.5, mu0, 0.5, mu1);
+    Vector<double> change(target);
+    change -= applied;
+    double scale = 0.;
+    for (unsigned int k = 0; k < n; ++k)
+      scale = std::max({scale, std::abs(mu0[k]), std::abs(mu1[k])});
+    if (change.linfty_norm() <= 1e-12 * scale)
+      change = 0.;
+    else
+      applied = target;
+    return change;
   }
 
   void

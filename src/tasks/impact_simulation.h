@@ -4,6 +4,7 @@
 #include "contact/contact_operator.h"
 #include "contact/contact_zone.h"
 #include "dynamics/condensed_solver.h"
+#include "dynamics/massless_zone.h"
 #include "elasticity/elasticity_operator.h"
 #include "modal/modal_projection.h"
 #include "output/csv_table.h"
@@ -63,6 +64,12 @@ namespace DiskImpact
     attempt_constrained_step(const dealii::Vector<double> &y_D,
                              dealii::Vector<double>       &u1_D,
                              dealii::Vector<double>       &P);
+    /// The change of the point forces' mean over the step that the exact
+    /// mean along the step asks for beyond the trapezoidal one already
+    /// applied (@p applied), for the end state @p u1_D.
+    dealii::Vector<double>
+    mean_force_correction(const dealii::Vector<double> &u1_D,
+                          dealii::Vector<double>       &applied) const;
     /// Take one step, halving it (and refactorizing) after a Newton failure.
     void
     advance();
@@ -130,12 +137,16 @@ namespace DiskImpact
     /// u on the contact candidates' DoFs, at the step's start and end.
     dealii::Vector<double> u_D, u1_D_new;
     /// Law 'constraint': the point forces at the step's start and end.
-    std::vector<double>                        point_forces, point_forces_new;
-    std::vector<bool>                          contact_support;
-    mutable dealii::PETScWrappers::MPI::Vector work, product;
-    double                                     normal_mass    = 0.;
-    double                                     energy_initial = 0.;
-    double                                     v_com_initial  = 0.;
+    std::vector<double> point_forces, point_forces_new;
+    /// With the energy-conserving scheme: the massless zone in equilibrium
+    /// and the points' static compliance, for the exact mean force.
+    std::unique_ptr<MasslessZone>                             massless;
+    std::vector<std::vector<std::pair<unsigned int, double>>> point_rows;
+    dealii::FullMatrix<double>                                static_compliance;
+    mutable dealii::PETScWrappers::MPI::Vector                work, product;
+    double                                                    normal_mass = 0.;
+    double energy_initial                                                 = 0.;
+    double v_com_initial                                                  = 0.;
 
     double dt = 0., t = 0.;
     double impulse = 0., energy_error = 0.;

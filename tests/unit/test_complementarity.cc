@@ -77,3 +77,46 @@ TEST_CASE("Complementarity: random problems meet the conditions, warm or cold",
         CHECK(warm.force[i] == Approx(cold.force[i]).margin(1e-12));
     }
 }
+
+TEST_CASE("Complementarity: the mean along a segment, piece by piece",
+          "[complementarity]")
+{
+  // One point: mu(s) = max(0, -q(s) / w) with q from 1 to -1, w = 2:
+  // mu = s - 1/2 beyond s = 1/2, mean 1/8.
+  FullMatrix<double> w(1, 1);
+  w(0, 0) = 2.;
+  Vector<double> q0(1), q1(1);
+  q0[0] = 1.;
+  q1[0] = -1.;
+  CHECK(mean_along_segment(w, q0, q1, 1e-14)[0] ==
+        Approx(0.125).epsilon(1e-14));
+
+  // Random problems: against the midpoint rule on 20000 subintervals of
+  // the pointwise solutions (error below 1e-8 for a piecewise linear mu
+  // with a few kinks).
+  std::mt19937                           generator(11);
+  std::uniform_real_distribution<double> entry(-1., 1.);
+  for (unsigned int trial = 0; trial < 5; ++trial)
+    {
+      const unsigned int n = 3 + trial;
+      const auto         W = random_spd(n, generator);
+      Vector<double>     a(n), b(n);
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          a[i] = entry(generator);
+          b[i] = entry(generator);
+        }
+      const auto         mean = mean_along_segment(W, a, b, 1e-14);
+      Vector<double>     sampled(n);
+      const unsigned int samples = 20000;
+      for (unsigned int k = 0; k < samples; ++k)
+        {
+          const double   s = (k + 0.5) / samples;
+          Vector<double> q(a);
+          q.sadd(1. - s, s, b);
+          sampled.add(1. / samples, solve_complementarity(W, q, 1e-14).force);
+        }
+      for (unsigned int i = 0; i < n; ++i)
+        CHECK(mean[i] == Approx(sampled[i]).margin(1e-8));
+    }
+}
