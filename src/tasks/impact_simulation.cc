@@ -11,10 +11,15 @@
 #include <deal.II/base/function.h>
 #include <deal.II/base/utilities.h>
 
+#include <deal.II/lac/lapack_full_matrix.h>
+
 #include <deal.II/numerics/vector_tools.h>
 
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <limits>
 #include <stdexcept>
 #include <tuple>
 
@@ -98,6 +103,77 @@ namespace DiskImpact
       file.set_attribute("/", "parameters", parameters_json);
       file.finish();
     }
+  } // namespace
+
+  namespace
+  {
+    /**
+     * Anderson's acceleration (Walker & Ni, SIAM J. Numer. Anal. 49, 2011)
+     * of the fixed-point iteration x <- x + f(x): the next x combines the
+     * last @p depth iterates so that their residuals f cancel best in
+     * least squares.
+     */
+    class AndersonAcceleration
+    {
+    public:
+      explicit AndersonAcceleration(const unsigned int depth)
+          : depth(depth)
+      {
+      }
+
+      Vector<double>
+      next(const Vector<double> &x, const Vector<double> &f)
+      {
+        xs.push_back(x);
+        fs.push_back(f);
+        if (xs.size() > depth + 1)
+          {
+            xs.erase(xs.begin());
+            fs.erase(fs.begin());
+          }
+        const unsigned int m = xs.size() - 1;
+        Vector<double>     result(x);
+        result += f;
+        if (m == 0)
+          return result;
+        // gamma minimizes |f - dF gamma|, dF_j = f_{j+1} - f_j, by the
+        // normal equations (m <= depth is small), slightly regularized.
+        std::vector<Vector<double>> dF(m), dX(m);
+        for (unsigned int j = 0; j < m; ++j)
+          {
+            dF[j] = fs[j + 1];
+            dF[j] -= fs[j];
+            dX[j] = xs[j + 1];
+            dX[j] -= xs[j];
+          }
+        LAPACKFullMatrix<double> normal(m, m);
+        Vector<double>           rhs(m);
+        double                   trace = 0.;
+        for (unsigned int i = 0; i < m; ++i)
+          {
+            rhs[i] = dF[i] * f;
+            for (unsigned int j = 0; j < m; ++j)
+              normal(i, j) = dF[i] * dF[j];
+            trace += normal(i, i);
+          }
+        if (!(trace > 0.))
+          return result;
+        for (unsigned int i = 0; i < m; ++i)
+          normal(i, i) += 1e-12 * trace;
+        normal.compute_lu_factorization();
+        normal.solve(rhs);
+        for (unsigned int j = 0; j < m; ++j)
+          {
+            result.add(-rhs[j], dX[j]);
+            result.add(-rhs[j], dF[j]);
+          }
+        return result;
+      }
+
+    private:
+      unsigned int                depth;
+      std::vector<Vector<double>> xs, fs;
+    };
   } // namespace
 
   ImpactSimulation::ImpactSimulation(const Parameters &parameters,
@@ -359,16 +435,21 @@ namespace DiskImpact
         // massless zone, moves the end state by
         // A^{-1} (-K_IM e) = X B^T dmu - 2 e, e = K_MM^{-1} B^T dmu (the
         // massless rows of A are K / 2): no further solve with A.
-        Vector<double> applied(zone->n_points());
-        Vector<double> y_D_corrected = y_D;
+        Vector<double>       applied(zone->n_points());
+        Vector<double>       y_D_corrected = y_D;
+        AndersonAcceleration acceleration(5);
         for (unsigned int pass = 0;; ++pass)
           {
             if (!attempt_constrained_step(y_D_corrected, u1_D, P))
               return false;
             if (!massless || pass == integrator.max_newton_iterations())
               break;
-            if (mean_force_correction(u1_D, applied).linfty_norm() == 0.)
+            // The fixed point dmu = mean(dmu) - trapezoid, by Anderson's
+            // acceleration.
+            const Vector<double> change = mean_force_correction(u1_D, applied);
+            if (change.linfty_norm() == 0.)
               break;
+            applied            = acceleration.next(applied, change);
             const auto missing = zone->inactive_dofs_of(applied);
             zone->activate(missing);
             solver->add_dofs(missing);
@@ -509,7 +590,7 @@ namespace DiskImpact
 
   Vector<double>
   ImpactSimulation::mean_force_correction(const Vector<double> &u1_D,
-                                          Vector<double>       &applied) const
+                                          const Vector<double> &applied) const
   {
     // Along the step the DoFs with mass move on a straight line, so the
     // massless zone's gaps without contact forces, q = g - W_s mu, are
@@ -537,8 +618,6 @@ namespace DiskImpact
       scale = std::max({scale, std::abs(mu0[k]), std::abs(mu1[k])});
     if (change.linfty_norm() <= 1e-12 * scale)
       change = 0.;
-    else
-      applied = target;
     return change;
   }
 

@@ -64,12 +64,12 @@ namespace DiskImpact
     attempt_constrained_step(const dealii::Vector<double> &y_D,
                              dealii::Vector<double>       &u1_D,
                              dealii::Vector<double>       &P);
-    /// The change of the point forces' mean over the step that the exact
-    /// mean along the step asks for beyond the trapezoidal one already
-    /// applied (@p applied), for the end state @p u1_D.
+    /// For the end state @p u1_D: the exact mean of the point forces along
+    /// the step, less the trapezoidal mean, less the correction
+    /// @p applied so far (zero once below rounding).
     dealii::Vector<double>
     mean_force_correction(const dealii::Vector<double> &u1_D,
-                          dealii::Vector<double>       &applied) const;
+                          const dealii::Vector<double> &applied) const;
     /// Take one step, halving it (and refactorizing) after a Newton failure.
     void
     advance();
