@@ -407,7 +407,7 @@ namespace DiskImpact
   }
 
   Vector<double>
-  ContactZone::constraint_force(const std::vector<double> &mu) const
+  ContactZone::constraint_force(const Vector<double> &mu) const
   {
     Vector<double> force(active.size());
     for (unsigned int k = 0; k < points.size(); ++k)
@@ -418,10 +418,10 @@ namespace DiskImpact
   }
 
   ContactState
-  ContactZone::constraint_state(const std::vector<double> &mu0,
-                                const std::vector<double> &mu1,
-                                const Vector<double>      &u1,
-                                const double               new_weight) const
+  ContactZone::constraint_state(const Vector<double> &mu0,
+                                const Vector<double> &mu1,
+                                const Vector<double> &u1,
+                                const double          new_weight) const
   {
     ContactState state;
     state.axisymmetric = axisymmetric;

@@ -141,7 +141,7 @@ namespace DiskImpact
     /// sum_q mu_q b_q on C: the force on C of the point forces @p mu (one
     /// per candidate point; zero where it cannot act).
     dealii::Vector<double>
-    constraint_force(const std::vector<double> &mu) const;
+    constraint_force(const dealii::Vector<double> &mu) const;
 
     /**
      * What the constraint's point forces say of the contact: the step's
@@ -149,8 +149,8 @@ namespace DiskImpact
      * @p new_weight of the end, and the end gaps at @p u1 (on C).
      */
     ContactState
-    constraint_state(const std::vector<double>    &mu0,
-                     const std::vector<double>    &mu1,
+    constraint_state(const dealii::Vector<double> &mu0,
+                     const dealii::Vector<double> &mu1,
                      const dealii::Vector<double> &u1,
                      double                        new_weight) const;
 

@@ -28,27 +28,6 @@ namespace DiskImpact
     stiffness.compute_cholesky_factorization();
   }
 
-  FullMatrix<double>
-  MasslessZone::compliance(const std::vector<Row> &rows) const
-  {
-    const unsigned int          n = rows.size();
-    FullMatrix<double>          W(n, n);
-    std::vector<Vector<double>> solved;
-    for (const Row &row : rows)
-      {
-        Vector<double> x(dofs.size());
-        for (const auto &[i, b] : row)
-          x[in_zone[i]] += b;
-        stiffness.solve(x);
-        solved.push_back(std::move(x));
-      }
-    for (unsigned int p = 0; p < n; ++p)
-      for (unsigned int q = 0; q < n; ++q)
-        for (const auto &[i, b] : rows[p])
-          W(p, q) += b * solved[q][in_zone[i]];
-    return W;
-  }
-
   namespace
   {
     /// K_MM^{-1} sum_p mu_p b_p on M.
@@ -68,6 +47,24 @@ namespace DiskImpact
       return x;
     }
   } // namespace
+
+  FullMatrix<double>
+  MasslessZone::compliance(const std::vector<Row> &rows) const
+  {
+    const unsigned int n = rows.size();
+    FullMatrix<double> W(n, n);
+    for (unsigned int q = 0; q < n; ++q)
+      {
+        Vector<double> unit(n);
+        unit[q] = 1.;
+        const Vector<double> x =
+          solve_static(stiffness, in_zone, rows, unit, dofs.size());
+        for (unsigned int p = 0; p < n; ++p)
+          for (const auto &[i, b] : rows[p])
+            W(p, q) += b * x[in_zone[i]];
+      }
+    return W;
+  }
 
   Vector<double>
   MasslessZone::response_on_candidates(const std::vector<Row> &rows,

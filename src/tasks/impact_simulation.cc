@@ -3,6 +3,7 @@
 #include "base/parameters.h"
 #include "base/run_error.h"
 #include "contact/complementarity.h"
+#include "dynamics/anderson_acceleration.h"
 #include "output/atomic_file.h"
 #include "output/hdf5_output.h"
 #include "output/state_output.h"
@@ -11,15 +12,10 @@
 #include <deal.II/base/function.h>
 #include <deal.II/base/utilities.h>
 
-#include <deal.II/lac/lapack_full_matrix.h>
-
 #include <deal.II/numerics/vector_tools.h>
 
 #include <chrono>
 #include <cmath>
-#include <cstdlib>
-#include <iostream>
-#include <limits>
 #include <stdexcept>
 #include <tuple>
 
@@ -103,77 +99,6 @@ namespace DiskImpact
       file.set_attribute("/", "parameters", parameters_json);
       file.finish();
     }
-  } // namespace
-
-  namespace
-  {
-    /**
-     * Anderson's acceleration (Walker & Ni, SIAM J. Numer. Anal. 49, 2011)
-     * of the fixed-point iteration x <- x + f(x): the next x combines the
-     * last @p depth iterates so that their residuals f cancel best in
-     * least squares.
-     */
-    class AndersonAcceleration
-    {
-    public:
-      explicit AndersonAcceleration(const unsigned int depth)
-          : depth(depth)
-      {
-      }
-
-      Vector<double>
-      next(const Vector<double> &x, const Vector<double> &f)
-      {
-        xs.push_back(x);
-        fs.push_back(f);
-        if (xs.size() > depth + 1)
-          {
-            xs.erase(xs.begin());
-            fs.erase(fs.begin());
-          }
-        const unsigned int m = xs.size() - 1;
-        Vector<double>     result(x);
-        result += f;
-        if (m == 0)
-          return result;
-        // gamma minimizes |f - dF gamma|, dF_j = f_{j+1} - f_j, by the
-        // normal equations (m <= depth is small), slightly regularized.
-        std::vector<Vector<double>> dF(m), dX(m);
-        for (unsigned int j = 0; j < m; ++j)
-          {
-            dF[j] = fs[j + 1];
-            dF[j] -= fs[j];
-            dX[j] = xs[j + 1];
-            dX[j] -= xs[j];
-          }
-        LAPACKFullMatrix<double> normal(m, m);
-        Vector<double>           rhs(m);
-        double                   trace = 0.;
-        for (unsigned int i = 0; i < m; ++i)
-          {
-            rhs[i] = dF[i] * f;
-            for (unsigned int j = 0; j < m; ++j)
-              normal(i, j) = dF[i] * dF[j];
-            trace += normal(i, i);
-          }
-        if (!(trace > 0.))
-          return result;
-        for (unsigned int i = 0; i < m; ++i)
-          normal(i, i) += 1e-12 * trace;
-        normal.compute_lu_factorization();
-        normal.solve(rhs);
-        for (unsigned int j = 0; j < m; ++j)
-          {
-            result.add(-rhs[j], dX[j]);
-            result.add(-rhs[j], dF[j]);
-          }
-        return result;
-      }
-
-    private:
-      unsigned int                depth;
-      std::vector<Vector<double>> xs, fs;
-    };
   } // namespace
 
   ImpactSimulation::ImpactSimulation(const Parameters &parameters,
@@ -312,8 +237,8 @@ namespace DiskImpact
     for (auto *x : {&u, &v, &a, &u_new, &v_new, &a_new, &along_normal, &b, &y})
       *x = op.create_vector();
     u_D.reinit(zone->candidate_dofs().size());
-    point_forces.assign(zone->n_points(), 0.);
-    point_forces_new   = point_forces;
+    point_forces.reinit(zone->n_points());
+    point_forces_new.reinit(zone->n_points());
     work               = op.create_vector();
     product            = op.create_vector();
     const auto &normal = parameters.contact.wall().normal;
@@ -454,17 +379,15 @@ namespace DiskImpact
             zone->activate(missing);
             solver->add_dofs(missing);
             y_D_corrected = y_D;
-            y_D_corrected += solver->observed_response(zone->constraint_force(
-              std::vector<double>(applied.begin(), applied.end())));
+            y_D_corrected +=
+              solver->observed_response(zone->constraint_force(applied));
             y_D_corrected.add(-2.,
                               massless->response_on_candidates(point_rows,
                                                                applied));
           }
         if (applied.linfty_norm() > 0.)
           {
-            solver->add_columns(zone->constraint_force(std::vector<double>(
-                                  applied.begin(), applied.end())),
-                                y);
+            solver->add_columns(zone->constraint_force(applied), y);
             massless->add_response(point_rows, applied, -2., y);
           }
         u_new = y;
@@ -549,7 +472,7 @@ namespace DiskImpact
         const auto missing = zone->dofs_to_activate({&u_D, &y_D, &u1_D});
         zone->activate(missing);
         solver->add_dofs(missing);
-        point_forces_new.assign(zone->n_points(), 0.);
+        point_forces_new.reinit(zone->n_points());
         if (zone->n_active_dofs() == 0)
           return true;
         const Vector<double> F0 = zone->constraint_force(point_forces);
@@ -597,25 +520,24 @@ namespace DiskImpact
     // linear in s from the start to the end state; the forces mu(s) solve
     // the static complementarity problem with them. AVF: the step force is
     // their mean, where the trapezoidal step used (mu0 + mu1) / 2.
-    const unsigned int n = zone->n_points();
-    Vector<double>     mu0(point_forces.begin(), point_forces.end()),
-      mu1(point_forces_new.begin(), point_forces_new.end());
-    Vector<double> q0 = zone->point_gaps(u_D), q1 = zone->point_gaps(u1_D);
-    static_compliance.vmult_add(q0, mu0 *= -1.);
-    static_compliance.vmult_add(q1, mu1 *= -1.);
-    Vector<double> target =
+    const unsigned int n  = zone->n_points();
+    Vector<double>     q0 = zone->point_gaps(u_D), q1 = zone->point_gaps(u1_D);
+    Vector<double>     response(n);
+    static_compliance.vmult(response, point_forces);
+    q0 -= response;
+    static_compliance.vmult(response, point_forces_new);
+    q1 -= response;
+    const Vector<double> target =
       mean_along_segment(static_compliance,
                          q0,
                          q1,
                          parameters.time_integrator.newton_tolerance() *
                            approach_estimate);
-    // mu0, mu1 hold -mu here.
-    target.add(0.5, mu0, 0.5, mu1);
     Vector<double> change(target);
+    change.add(-0.5, point_forces, -0.5, point_forces_new);
     change -= applied;
-    double scale = 0.;
-    for (unsigned int k = 0; k < n; ++k)
-      scale = std::max({scale, std::abs(mu0[k]), std::abs(mu1[k])});
+    const double scale =
+      std::max(point_forces.linfty_norm(), point_forces_new.linfty_norm());
     if (change.linfty_norm() <= 1e-12 * scale)
       change = 0.;
     return change;

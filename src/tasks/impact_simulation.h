@@ -137,7 +137,7 @@ namespace DiskImpact
     /// u on the contact candidates' DoFs, at the step's start and end.
     dealii::Vector<double> u_D, u1_D_new;
     /// Law 'constraint': the point forces at the step's start and end.
-    std::vector<double> point_forces, point_forces_new;
+    dealii::Vector<double> point_forces, point_forces_new;
     /// With the energy-conserving scheme: the massless zone in equilibrium
     /// and the points' static compliance, for the exact mean force.
     std::unique_ptr<MasslessZone>                             massless;
