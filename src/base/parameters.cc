@@ -84,6 +84,10 @@ namespace DiskImpact
     require(geometry.is_axisymmetric() || impact.revolved_view() == 0.,
             "Impact: 'Revolved view' is a sphere's 3D view; a disk's "
             "ParaView output is impact.pvd (set 'Revolved view = 0')");
+    require(geometry.is_axisymmetric() || modal_solver.n_torsional_modes() == 0,
+            "Modal analysis: 'Torsional modes' are a sphere's azimuthal "
+            "modes; a disk's torsional modes (n = 0) are among its in-plane "
+            "modes (set 'Torsional modes = 0')");
     // The disk's reduced models (seeds 000-002) have no sphere version.
     require(!geometry.is_axisymmetric() ||
               (run.task != Task::reference_models &&

@@ -57,14 +57,8 @@ namespace DiskImpact
   }
 
   ElasticityOperator::ElasticityOperator(const unsigned int degree)
-      : fe_degree(degree)
+      : DiscreteOperator(degree)
   {
-  }
-
-  unsigned int
-  ElasticityOperator::degree() const
-  {
-    return fe_degree;
   }
 
   void
@@ -76,15 +70,7 @@ namespace DiskImpact
   {
     section = Section(geometry.is_axisymmetric());
     fe      = std::make_unique<FESystem<2>>(FE_Q<2>(fe_degree), 2);
-    mapping = std::make_unique<MappingQ<2>>(fe_degree);
-
-    dof_handler.reinit(triangulation);
-    dof_handler.distribute_dofs(*fe);
-    // Bandwidth-reducing order: the mat-vec products of the eigensolver and
-    // the time integrator run through memory in order.
-    DoFRenumbering::Cuthill_McKee(dof_handler);
-    owned_dofs = dof_handler.locally_owned_dofs();
-    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant_dofs);
+    distribute_dofs(triangulation, *fe);
 
     constraints.clear();
     constraints.reinit(relevant_dofs);
@@ -378,15 +364,6 @@ namespace DiskImpact
   }
 
   void
-  ElasticityOperator::move_constrained_eigenvalues(const double eigenvalue)
-  {
-    for (const auto i : owned_dofs)
-      if (constraints.is_constrained(i))
-        mass.set(i, i, stiffness.diag_element(i) / eigenvalue);
-    mass.compress(VectorOperation::insert);
-  }
-
-  void
   ElasticityOperator::assemble_body_force(const Tensor<1, 2> &force_per_area,
                                           PETScWrappers::MPI::Vector &f,
                                           const types::material_id body) const
@@ -545,63 +522,4 @@ namespace DiskImpact
     return section;
   }
 
-  const DoFHandler<2> &
-  ElasticityOperator::get_dof_handler() const
-  {
-    return dof_handler;
-  }
-
-  const MappingQ<2> &
-  ElasticityOperator::get_mapping() const
-  {
-    return *mapping;
-  }
-
-  const AffineConstraints<double> &
-  ElasticityOperator::get_constraints() const
-  {
-    return constraints;
-  }
-
-  const IndexSet &
-  ElasticityOperator::locally_owned_dofs() const
-  {
-    return owned_dofs;
-  }
-
-  const IndexSet &
-  ElasticityOperator::locally_relevant_dofs() const
-  {
-    return relevant_dofs;
-  }
-
-  const PETScWrappers::MPI::SparseMatrix &
-  ElasticityOperator::mass_matrix() const
-  {
-    return mass;
-  }
-
-  const PETScWrappers::MPI::SparseMatrix &
-  ElasticityOperator::stiffness_matrix() const
-  {
-    return stiffness;
-  }
-
-  PETScWrappers::MPI::Vector
-  ElasticityOperator::create_vector() const
-  {
-    return PETScWrappers::MPI::Vector(owned_dofs,
-                                      dof_handler.get_communicator());
-  }
-
-  PETScWrappers::MPI::Vector
-  ElasticityOperator::create_ghosted(
-    const PETScWrappers::MPI::Vector &vector) const
-  {
-    PETScWrappers::MPI::Vector ghosted(owned_dofs,
-                                       relevant_dofs,
-                                       dof_handler.get_communicator());
-    ghosted = vector;
-    return ghosted;
-  }
 } // namespace DiskImpact

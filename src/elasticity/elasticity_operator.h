@@ -1,5 +1,6 @@
 #pragma once
 
+#include "elasticity/discrete_operator.h"
 #include "elasticity/material.h"
 #include "elasticity/section.h"
 
@@ -43,13 +44,10 @@ namespace DiskImpact
    * the mass and stiffness matrices as distributed PETSc matrices, planar or
    * axisymmetric (Section).
    */
-  class ElasticityOperator
+  class ElasticityOperator : public DiscreteOperator
   {
   public:
     explicit ElasticityOperator(unsigned int degree);
-
-    unsigned int
-    degree() const;
 
     /// Distribute DoFs on @p triangulation, build constraints and matrices
     /// (with @p with_tangent also a matrix of K's pattern for Newton). The
@@ -107,14 +105,6 @@ namespace DiskImpact
     dealii::PETScWrappers::MPI::Vector
     mass_functional(const dealii::PETScWrappers::MPI::Vector &y) const;
 
-    /**
-     * Make constrained DoFs harmless for the eigenproblem: they are decoupled
-     * rows with K_ii / M_ii set to @p eigenvalue, far above the spectrum of
-     * interest (deal.II step-36 discusses these spurious eigenvalues).
-     */
-    void
-    move_constrained_eigenvalues(double eigenvalue);
-
     /// f_i = int b . v_i dV for a uniform body force @p force_per_area (per
     /// volume for a sphere), on the cells of material id @p body (all cells
     /// if invalid_material_id).
@@ -158,44 +148,17 @@ namespace DiskImpact
     /// Planar or axisymmetric (set by setup() from the geometry).
     const Section &
     get_section() const;
-    const dealii::DoFHandler<2> &
-    get_dof_handler() const;
-    const dealii::MappingQ<2> &
-    get_mapping() const;
-    const dealii::AffineConstraints<double> &
-    get_constraints() const;
-    const dealii::IndexSet &
-    locally_owned_dofs() const;
-    const dealii::IndexSet &
-    locally_relevant_dofs() const;
-    const dealii::PETScWrappers::MPI::SparseMatrix &
-    mass_matrix() const;
-    const dealii::PETScWrappers::MPI::SparseMatrix &
-    stiffness_matrix() const;
     const dealii::PETScWrappers::MPI::SparseMatrix &
     damping_matrix() const;
-
-    /// A distributed vector without ghosts.
-    dealii::PETScWrappers::MPI::Vector
-    create_vector() const;
-    /// A ghosted copy of @p vector (for evaluation on locally owned cells).
-    dealii::PETScWrappers::MPI::Vector
-    create_ghosted(const dealii::PETScWrappers::MPI::Vector &vector) const;
 
   private:
     /// Constrain the x-displacement to zero at the vertices @p pins.
     void
     pin_axial_displacement(const std::vector<dealii::Point<2>> &pins);
 
-    const unsigned int fe_degree;
-    Section            section;
+    Section section;
 
     std::unique_ptr<dealii::FESystem<2>> fe;
-    std::unique_ptr<dealii::MappingQ<2>> mapping;
-    dealii::DoFHandler<2>                dof_handler;
-    dealii::IndexSet                     owned_dofs;
-    dealii::IndexSet                     relevant_dofs;
-    dealii::AffineConstraints<double>    constraints;
     /// DoFs without inertia (mass redistribution), size n_dofs.
     dealii::IndexSet massless_dofs;
 
@@ -205,8 +168,6 @@ namespace DiskImpact
       const std::vector<dealii::types::global_dof_index> &dof_indices,
       dealii::FullMatrix<double>                         &cell_mass) const;
 
-    dealii::PETScWrappers::MPI::SparseMatrix mass;
-    dealii::PETScWrappers::MPI::SparseMatrix stiffness;
     dealii::PETScWrappers::MPI::SparseMatrix tangent;
     dealii::PETScWrappers::MPI::SparseMatrix damping;
     bool                                     with_damping = false;

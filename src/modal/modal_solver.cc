@@ -3,6 +3,7 @@
 #include "base/petsc_check.h"
 #include "base/run_error.h"
 #include "elasticity/elasticity_operator.h"
+#include "elasticity/torsion_operator.h"
 
 #include <slepceps.h>
 
@@ -31,6 +32,12 @@ namespace DiskImpact
                       Patterns::Integer(1, 2000),
                       "Number of elastic modes wanted; the rigid-body modes "
                       "come in addition.");
+    prm.declare_entry("Torsional modes",
+                      "0",
+                      Patterns::Integer(0, 2000),
+                      "Sphere only: number of torsional modes (azimuthal "
+                      "displacement, m = 0) computed beside the spheroidal "
+                      "ones, written to torsional_modes.csv; 0: none.");
     prm.declare_entry("Eigensolver tolerance",
                       "1e-10",
                       Patterns::Double(1e-16, 1e-4),
@@ -45,6 +52,7 @@ namespace DiskImpact
   {
     prm.enter_subsection("Modal analysis");
     n_modes            = prm.get_integer("Number of modes");
+    n_torsional        = prm.get_integer("Torsional modes");
     relative_tolerance = prm.get_double("Eigensolver tolerance");
     prm.leave_subsection();
   }
@@ -61,16 +69,23 @@ namespace DiskImpact
     n_modes = n;
   }
 
+  unsigned int
+  ModalSolver::n_torsional_modes() const
+  {
+    return n_torsional;
+  }
+
   double
   ModalSolver::tolerance() const
   {
     return relative_tolerance;
   }
 
+  template <typename Operator>
   ModalBasis
-  ModalSolver::solve(const ElasticityOperator &op,
-                     const unsigned int        n_wanted,
-                     const double              shift) const
+  ModalSolver::solve(const Operator    &op,
+                     const unsigned int n_wanted,
+                     const double       shift) const
   {
     const Mat stiffness = op.stiffness_matrix();
     const Mat mass      = op.mass_matrix();
@@ -147,4 +162,9 @@ namespace DiskImpact
       }
     return basis;
   }
+
+  template ModalBasis
+  ModalSolver::solve(const ElasticityOperator &, unsigned int, double) const;
+  template ModalBasis
+  ModalSolver::solve(const TorsionOperator &, unsigned int, double) const;
 } // namespace DiskImpact

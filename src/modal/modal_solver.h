@@ -8,8 +8,6 @@
 
 namespace DiskImpact
 {
-  class ElasticityOperator;
-
   /// Eigenpairs K phi = omega^2 M phi, ascending, phi M-orthonormal.
   struct ModalBasis
   {
@@ -41,21 +39,25 @@ namespace DiskImpact
     n_elastic_modes() const;
     void
     set_n_elastic_modes(unsigned int n);
+    /// Torsional (azimuthal, m = 0) modes of a sphere wanted beside the
+    /// spheroidal ones (task 'modal analysis'; 0: none).
+    unsigned int
+    n_torsional_modes() const;
     double
     tolerance() const;
 
     /**
-     * The lowest @p n_wanted eigenpairs of @p op, whose matrices must be
-     * assembled. @p shift is the (negative) shift of the spectral
-     * transformation.
+     * The lowest @p n_wanted eigenpairs of @p op (ElasticityOperator or
+     * TorsionOperator), whose matrices must be assembled. @p shift is the
+     * (negative) shift of the spectral transformation.
      */
+    template <typename Operator>
     ModalBasis
-    solve(const ElasticityOperator &op,
-          unsigned int              n_wanted,
-          double                    shift) const;
+    solve(const Operator &op, unsigned int n_wanted, double shift) const;
 
   private:
     unsigned int n_modes            = 40;
+    unsigned int n_torsional        = 0;
     double       relative_tolerance = 1e-10;
   };
 } // namespace DiskImpact

@@ -3,7 +3,10 @@
 
 usage: check_modes.py OUTPUT_DIR [--rigid N] [--orientations 1|2]
                       [--max-error E] [--first K] [--analytic-order]
-                      [--z-parity]
+                      [--z-parity] [--torsional]
+
+--torsional checks a sphere's torsional_modes.csv (against
+torsional_analytic_modes.csv; z-parity (-1)^(n-1)) instead of modes.csv.
 """
 import argparse
 import csv
@@ -30,9 +33,12 @@ def main():
     p.add_argument("--z-parity", action="store_true",
                    help="sphere: the measured z_parity of each elastic mode "
                    "must be (-1)^n")
+    p.add_argument("--torsional", action="store_true",
+                   help="check torsional_modes.csv (sphere) instead")
     a = p.parse_args()
 
-    modes = read(a.output_dir + "/modes.csv")
+    prefix = "torsional_" if a.torsional else ""
+    modes = read(a.output_dir + f"/{prefix}modes.csv")
     failures = []
     rigid = [m for m in modes if m["family"] == "rigid"]
     elastic = [m for m in modes if m["family"] != "rigid"]
@@ -60,7 +66,10 @@ def main():
             failures.append(f"relative error {worst:.3e} > {a.max_error:.1e}")
 
     if a.analytic_order:
-        analytic = read(a.output_dir + "/analytic_modes.csv")
+        analytic = read(a.output_dir + f"/{prefix}analytic_modes.csv")
+        if len(analytic) < len(elastic):
+            failures.append(f"{len(analytic)} analytic modes for "
+                            f"{len(elastic)} computed ones")
         for i, (m, ref) in enumerate(zip(elastic, analytic)):
             if label(m) != label(ref):
                 failures.append(f"elastic mode {i}: label {label(m)}, "
@@ -68,7 +77,9 @@ def main():
 
     if a.z_parity:
         for i, m in enumerate(elastic):
-            want = "even" if int(m["n"]) % 2 == 0 else "odd"
+            # spheroidal u_r ~ P_n: (-1)^n; torsional u_phi ~ P_n^1: (-1)^(n-1)
+            even = (int(m["n"]) + (1 if a.torsional else 0)) % 2 == 0
+            want = "even" if even else "odd"
             if m.get("z_parity") != want:
                 failures.append(f"elastic mode {i} {label(m)}: z_parity "
                                 f"{m.get('z_parity')}, expected {want}")
