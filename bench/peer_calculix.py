@@ -1,40 +1,76 @@
 #!/usr/bin/python3
-"""The same disk impact in CalculiX and in diskimpact, one after the other.
+"""CalculiX and diskimpact on the same disk impact: epsilon, error, time.
+
+The same impact in both codes, one after the other, each with its error
+against a reference epsilon.
 
 Plane strain, E = 1, nu = 0.3, rho = 1, R = 1; the half disk (y >= 0,
 symmetric about the impact axis) hits the rigid wall x = 0 at
 v = 0.1 c, c = sqrt(E / ((1 - nu^2) rho)), touching it at t = 0.
 
-CalculiX (ccx 2.20) gets a gmsh mesh of 8-node quadrilaterals graded toward
-the contact point, extruded into one layer of 20-node bricks (C3D20) with
-u_z = 0 on every node: exact plane strain, since the plane field solves the
-layer's discrete equations. (ccx expands its own CPE8 elements into such
-bricks internally, but ccx 2.20 does not pass *INITIAL CONDITIONS,
-TYPE=VELOCITY on to the expanded nodes: the disk would not move.) The wall
-is a block x in [-0.1, 0] of bricks with all its nodes fixed.
-Contact is ccx's face-to-face penalty contact (*CONTACT PAIR, TYPE=SURFACE
-TO SURFACE), frictionless: slave = the disk's element faces on the arc with
-x < 0.5 R (the contact half-width reaches about 0.45 R), master = the wall's
-face x = 0, linear pressure-overclosure with slope kappa E2 / h_min
-(kappa = 100, E2 = E / (1 - nu^2), h_min the element size at the contact
-point). Implicit dynamics *DYNAMIC, DIRECT, ALPHA = 0 (Newmark's average
-acceleration, no numerical damping) at the fixed time increment
-(5.9 R/c) / N, N = --steps-per-contact, up to 1.25 * 5.9 R/c (the contact
-lasts about 5.9 R/c). epsilon = J / (m v) - 1 with J the wall's reaction
-impulse (trapezoidal sum of the total reaction force RF_x of the wall nodes
-over the increments, which is the momentum balance of Newmark's rule) and
-m the mass of the meshed half disk. The run fails if ccx fails or if the
-reaction force is not zero at the end (disk still on the wall).
+Three parts, run one after the other on one core each
+(OMP_NUM_THREADS=1, DEAL_II_NUM_THREADS=1, one MPI rank):
 
-diskimpact runs params/impact.prm in plane strain with nu = 0.3 (its own
-mesh, penalty factor and time step).
+1. Reference. diskimpact's convergence study (Task = impact convergence)
+   of this case with the wall as an exact non-penetration constraint
+   (Law = constraint: no penalty error), quartic elements, three mesh
+   levels (base: 1 global refinement, 6 elements across the contact,
+   grading 0.6, dt = tau_est / 100; each level halves every element size
+   and dt). Its estimate "epsilon = eps_ref +- bar" (epsilon_estimate.csv)
+   is the reference; the study's wall time is printed (about 5 minutes,
+   most of it the finest level, 86744 DoFs). --reference EPS BAR skips
+   the study and uses the given values instead, e.g. those printed by an
+   earlier run, or those of build/diskimpact DIR/reference.prm on the
+   reference.prm that a run with --work DIR leaves there.
 
-Prints both epsilon, their difference, the DoFs (2 per node of the plane
-mesh), steps and wall times, and the ratio of the wall times. Both codes
-run with OMP_NUM_THREADS=1 and DEAL_II_NUM_THREADS=1 (one core each).
+2. CalculiX (ccx 2.20) gets a gmsh mesh of 8-node quadrilaterals graded
+   toward the contact point (--hmin at the contact, --hmax far from it),
+   extruded into one layer of 20-node bricks (C3D20) with u_z = 0 on every
+   node: exact plane strain, since the plane field solves the layer's
+   discrete equations. (ccx expands its own CPE8 elements into such
+   bricks internally, but ccx 2.20 does not pass *INITIAL CONDITIONS,
+   TYPE=VELOCITY on to the expanded nodes: the disk would not move.) The
+   wall is a block x in [-0.1, 0] of bricks with all its nodes fixed.
+   Contact is ccx's face-to-face penalty contact (*CONTACT PAIR,
+   TYPE=SURFACE TO SURFACE), frictionless: slave = the disk's element
+   faces on the arc with x < 0.5 R (the contact half-width reaches about
+   0.45 R), master = the wall's face x = 0, linear pressure-overclosure
+   with slope kappa E2 / h_min (kappa = 100, E2 = E / (1 - nu^2)).
+   Implicit dynamics *DYNAMIC, DIRECT, ALPHA = 0 (Newmark's average
+   acceleration, no numerical damping) at the fixed time increment
+   (5.9 R/c) / N, N = --steps-per-contact, up to 1.25 * 5.9 R/c (the
+   contact lasts about 5.9 R/c). epsilon = J / (m v) - 1 with J the
+   wall's reaction impulse (trapezoidal sum of the total reaction force
+   RF_x of the wall nodes over the increments, which is the momentum
+   balance of Newmark's rule) and m the mass of the meshed half disk. The
+   run fails if ccx fails or if the reaction force is not zero at the end
+   (disk still on the wall). The defaults (h = 0.02 ... 0.2 R, N = 100)
+   keep ccx near a minute; h = 0.01 ... 0.1 R with N = 200 takes more
+   than 10 minutes.
+
+3. diskimpact's plain impact task (penalty contact, energy-conserving
+   time stepping) at each setting of DISKIMPACT_SETTINGS: the
+   convergence study's base discretization (1 global refinement, 6
+   elements across the contact, grading 0.6, kappa = 100,
+   dt = tau_est / 100) with degree 2, 3 and 4, params/impact.prm's
+   discretization (degree 2, 3 global refinements, 12 elements across,
+   grading 0.3, kappa = 400, dt = tau_est / 200), and the study's first
+   refined level with degree 4.
+
+Prints the reference with its bar and wall time; for CalculiX and for
+each diskimpact setting epsilon, its error |epsilon - eps_ref|, DoFs (2
+per node of the plane mesh), steps and wall time; then the cheapest
+diskimpact setting (smallest wall time) whose error is at most
+CalculiX's, the difference of the two epsilon, the ratio of the wall
+times CalculiX / diskimpact and whether it is at least 30. Since the
+reference has a bar, it also says whether CalculiX's error exceeds the
+bar and whether the comparison still holds with the bar counted against
+diskimpact (its error + bar <= CalculiX's error - bar). diskimpact's
+errors are measured against a reference from diskimpact itself (another
+contact law, finer meshes); CalculiX's are independent of it.
 
 usage: bench/peer_calculix.py [--hmin H] [--hmax H] [--steps-per-contact N]
-                              [--work DIR]
+                              [--reference EPS BAR] [--work DIR]
        (bench/peer_calculix.sh installs calculix-ccx and gmsh and calls
        this)
 """
@@ -51,7 +87,8 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 EXE = os.path.join(ROOT, "build", "diskimpact")
 NU = 0.3
 E2 = 1. / (1. - NU * NU)          # plane strain: E / (1 - nu^2)
-VELOCITY = 0.1 * math.sqrt(E2)   # 0.1 c with rho = 1
+SPEED = 0.1                      # v / c
+VELOCITY = SPEED * math.sqrt(E2)   # rho = 1
 CONTACT_TIME = 5.9 / math.sqrt(E2)   # about 5.9 R/c at 0.1 c
 KAPPA = 100.                     # penalty factor of CalculiX's contact
 SLAVE_X = 0.5                    # slave faces: disk arc with x < SLAVE_X
@@ -59,6 +96,23 @@ WALL_THICKNESS = 0.1
 WALL_HEIGHT = 0.8
 LAYER = 0.05                     # thickness of the brick layer
 THREADS = {"OMP_NUM_THREADS": "1", "DEAL_II_NUM_THREADS": "1"}
+
+# diskimpact: the convergence study's base discretization (penalty)
+BASE = {"degree": 2, "refinements": 1, "across": 6, "grading": 0.6,
+        "law": "penalty", "kappa": 100., "fraction": 0.01}
+# its first refined level: every element size and the time step halved
+LEVEL1 = {**BASE, "refinements": 2, "across": 12, "grading": 0.3,
+          "fraction": 0.005}
+DISKIMPACT_SETTINGS = [
+    ("Q2 base", BASE),
+    ("Q3 base", {**BASE, "degree": 3}),
+    ("Q4 base", {**BASE, "degree": 4}),
+    ("Q2 as impact.prm", {**BASE, "refinements": 3, "across": 12,
+                          "grading": 0.3, "kappa": 400., "fraction": 0.005}),
+    ("Q4 level 1", {**LEVEL1, "degree": 4}),
+]
+REFERENCE = {**BASE, "degree": 4, "law": "constraint"}
+REFERENCE_LEVELS = 3
 
 GEO = """R = 1;
 Point(1) = {{R, 0, 0}}; Point(2) = {{0, 0, 0}};
@@ -332,46 +386,203 @@ def run_calculix(args, work):
             "equations": int(equations.group(1)) if equations else None}
 
 
-def run_diskimpact(work):
-    with open(os.path.join(ROOT, "params", "impact.prm")) as f:
-        text = f.read()
-    text = text.replace("output/impact", os.path.join(work, "di"))
-    text = re.sub(r"set Plane model\s*=.*", "set Plane model = plane strain",
-                  text)
-    text = re.sub(r"set Poisson ratio\s*=.*", "set Poisson ratio = 0.3", text)
-    text = re.sub(r"set Output interval\s*=.*", "set Output interval = 0",
-                  text)
-    prm = os.path.join(work, "diskimpact.prm")
-    with open(prm, "w") as f:
+def diskimpact_prm(path, output, setting, task="impact", levels=None):
+    """Writes a diskimpact parameter file for this case."""
+    contact = ("set Law = constraint" if setting["law"] == "constraint" else
+               f"set Penalty factor = {setting['kappa']:g}")
+    text = f"""set Task             = {task}
+set Output directory = {output}
+subsection Geometry
+  set Domain             = half disk
+  set Global refinements = {setting['refinements']}
+end
+subsection Material
+  set Plane model   = plane strain
+  set Young modulus = 1
+  set Poisson ratio = {NU:g}
+  set Density       = 1
+end
+subsection Finite element
+  set Degree = {setting['degree']}
+end
+subsection Contact
+  {contact}
+end
+subsection Impact
+  set Velocity                = {SPEED:g}
+  set Elements across contact = {setting['across']}
+  set Grading                 = {setting['grading']:g}
+  set Output interval         = 0
+end
+subsection Time stepping
+  set Scheme             = energy conserving
+  set Time step fraction = {setting['fraction']:g}
+end
+"""
+    if levels is not None:
+        text += ("subsection Impact convergence\n"
+                 f"  set Mesh levels      = {levels}\n"
+                 "  set Time step levels = 1\n"
+                 "  set Penalty levels   = 1\nend\n")
+    with open(path, "w") as f:
         f.write(text)
+
+
+def run_exe(prm):
+    """Runs build/diskimpact on one core; returns its wall time."""
     start = time.time()
     result = subprocess.run([EXE, prm], capture_output=True, text=True,
                             env={**os.environ, **THREADS})
     seconds = time.time() - start
     if result.returncode != 0:
-        fail("diskimpact failed: " + (result.stderr or result.stdout)
-             .strip().replace("\n", " ")[-300:])
-    with open(os.path.join(work, "di", "summary.csv")) as f:
-        header, row = f.read().splitlines()[:2]
-    summary = dict(zip(header.split(","), row.split(",")))
-    penalty = re.search(r"set Penalty factor\s*=\s*(\S+)", text)
+        fail("diskimpact failed on " + os.path.basename(prm) + ": " +
+             (result.stderr or result.stdout).strip()
+             .replace("\n", " ")[-300:])
+    return seconds
+
+
+def read_csv(path):
+    with open(path) as f:
+        lines = f.read().splitlines()
+    header = lines[0].split(",")
+    return [dict(zip(header, line.split(","))) for line in lines[1:]]
+
+
+def run_reference(work):
+    """diskimpact's convergence study with the exact constraint:
+    (epsilon estimate, its bar, epsilon per level, wall time)."""
+    prm, output = (os.path.join(work, "reference.prm"),
+                   os.path.join(work, "reference"))
+    diskimpact_prm(prm, output, REFERENCE, task="impact convergence",
+                   levels=REFERENCE_LEVELS)
+    seconds = run_exe(prm)
+    total = [row for row in read_csv(os.path.join(
+        output, "epsilon_estimate.csv")) if row["factor"] == "total"]
+    if not total:
+        fail("the reference study wrote no total estimate")
+    levels = [(int(row["n_dofs"]), float(row["epsilon"])) for row in
+              read_csv(os.path.join(output, "impact_convergence.csv"))
+              if row["factor"] in ("base", "mesh")]
+    return {"epsilon": float(total[0]["limit"]),
+            "bar": float(total[0]["error"]), "levels": levels,
+            "seconds": seconds}
+
+
+def run_diskimpact(work, name, setting):
+    """One impact of diskimpact at a setting of DISKIMPACT_SETTINGS."""
+    stem = re.sub(r"\W+", "_", name.lower())
+    prm, output = os.path.join(work, stem + ".prm"), os.path.join(work, stem)
+    diskimpact_prm(prm, output, setting)
+    seconds = run_exe(prm)
+    summary = read_csv(os.path.join(output, "summary.csv"))[0]
     return {"epsilon": float(summary["epsilon"]),
             "dofs": int(summary["n_dofs"]), "steps": int(summary["steps"]),
-            "seconds": seconds,
-            "penalty": penalty.group(1) if penalty else "default"}
+            "seconds": seconds}
+
+
+def describe(setting):
+    return (f"degree {setting['degree']}, global refinements "
+            f"{setting['refinements']}, {setting['across']} elements across "
+            f"the contact, grading {setting['grading']:g}, penalty factor "
+            f"{setting['kappa']:g}, dt = tau_est / "
+            f"{1. / setting['fraction']:g}")
+
+
+def run_all(args, work):
+    """The reference (unless given), CalculiX, then every diskimpact
+    setting, one after the other."""
+    if args.reference:
+        reference = {"epsilon": args.reference[0], "bar": args.reference[1],
+                     "levels": None, "seconds": None}
+    else:
+        reference = run_reference(work)
+    ccx = run_calculix(args, work)
+    own = [(name, setting, run_diskimpact(work, name, setting))
+           for name, setting in DISKIMPACT_SETTINGS]
+    return reference, ccx, own
+
+
+def report_reference(reference):
+    eps, bar = reference["epsilon"], reference["bar"]
+    if reference["seconds"] is None:
+        print(f"reference (given): epsilon = {eps:.8f} +- {bar:.2e}")
+        return
+    print("reference: diskimpact's convergence study, Law = constraint, "
+          f"Q{REFERENCE['degree']}, {REFERENCE_LEVELS} mesh levels ("
+          + ", ".join(f"{e:.8f} on {n} DoFs"
+                      for n, e in reference["levels"]) + ")")
+    print(f"reference: epsilon = {eps:.8f} +- {bar:.2e}, "
+          f"wall {reference['seconds']:.1f} s")
+
+
+def report_runs(args, reference, ccx, own):
+    eps = reference["epsilon"]
+    print(f"plane strain, nu = {NU:g}, v = {SPEED:g} c; "
+          f"{THREADS['OMP_NUM_THREADS']} thread each")
+    print(f"CalculiX: one layer of C3D20, h = {args.hmin:g}..{args.hmax:g} "
+          f"R, face-to-face penalty {KAPPA:g} E2 / h, "
+          f"{ccx['steps']} fixed increments of 5.9/{args.steps_per_contact} "
+          "R/c")
+    for name, setting, _ in own:
+        print(f"diskimpact {name}: {describe(setting)}")
+    print(f"{'run':28s} {'epsilon':>10s} {'error':>8s} {'DoFs':>6s} "
+          f"{'steps':>5s} {'wall [s]':>8s}")
+    rows = [("CalculiX", ccx)] + [("diskimpact " + name, run)
+                                  for name, _, run in own]
+    for name, run in rows:
+        print(f"{name:28s} {run['epsilon']:10.8f} "
+              f"{abs(run['epsilon'] - eps):8.2e} {run['dofs']:6d} "
+              f"{run['steps']:5d} {run['seconds']:8.2f}")
+    if ccx["equations"] is not None and ccx["drift"] is not None:
+        print(f"CalculiX: {ccx['equations']} equations (brick layer), total "
+              f"energy varies by {100 * ccx['drift']:.2f} % of the initial "
+              "kinetic energy")
+
+
+def report_comparison(reference, ccx, own):
+    eps, bar = reference["epsilon"], reference["bar"]
+    ccx_error = abs(ccx["epsilon"] - eps)
+    print(f"CalculiX's error {ccx_error:.2e} is "
+          f"{'above' if ccx_error > bar else 'within'} the reference's bar "
+          f"{bar:.2e}")
+    good = [(run["seconds"], name, run) for name, _, run in own
+            if abs(run["epsilon"] - eps) <= ccx_error]
+    if not good:
+        print("no diskimpact setting has an error <= CalculiX's: "
+              "acceptance (>= 30x faster at equal or smaller error) NOT met")
+        return
+    seconds, name, run = min(good, key=lambda entry: entry[0])
+    error = abs(run["epsilon"] - eps)
+    ratio = ccx["seconds"] / seconds
+    print(f"cheapest diskimpact setting with error <= CalculiX's: {name} "
+          f"(error {error:.2e} vs {ccx_error:.2e})")
+    print(f"epsilon difference (CalculiX - diskimpact {name}): "
+          f"{ccx['epsilon'] - run['epsilon']:.2e}")
+    print(f"with the reference's bar counted against diskimpact: "
+          f"{error:.2e} + {bar:.2e} "
+          f"{'<=' if error + bar <= ccx_error - bar else '>'} "
+          f"{ccx_error:.2e} - {bar:.2e}")
+    print(f"wall time ratio CalculiX / diskimpact {name}: "
+          f"{ccx['seconds']:.2f} s / {seconds:.2f} s = {ratio:.1f}: "
+          f"{'>=' if ratio >= 30. else '<'} 30, acceptance "
+          f"{'met' if ratio >= 30. else 'NOT met'}")
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--hmin", type=float, default=0.01,
+    parser.add_argument("--hmin", type=float, default=0.02,
                         help="CalculiX element size at the contact point "
                         "(default %(default)s R)")
-    parser.add_argument("--hmax", type=float, default=0.1,
+    parser.add_argument("--hmax", type=float, default=0.2,
                         help="CalculiX element size far from the contact "
                         "(default %(default)s R)")
-    parser.add_argument("--steps-per-contact", type=int, default=200,
+    parser.add_argument("--steps-per-contact", type=int, default=100,
                         help="CalculiX time increments per contact time "
                         "(default %(default)s)")
+    parser.add_argument("--reference", type=float, nargs=2,
+                        metavar=("EPS", "BAR"),
+                        help="reference epsilon and its bar instead of "
+                        "running diskimpact's convergence study")
     parser.add_argument("--work", default=None,
                         help="keep the input and output files in this "
                         "directory (default: a temporary one, removed)")
@@ -380,29 +591,13 @@ def main():
         fail(f"{EXE} not found; build first")
     if args.work:
         os.makedirs(args.work, exist_ok=True)
-        work = os.path.abspath(args.work)
-        ccx, own = run_calculix(args, work), run_diskimpact(work)
+        reference, ccx, own = run_all(args, os.path.abspath(args.work))
     else:
         with tempfile.TemporaryDirectory() as work:
-            ccx, own = run_calculix(args, work), run_diskimpact(work)
-    print("plane strain, nu = 0.3, v = 0.1 c; CalculiX: one layer of C3D20, "
-          f"h = {args.hmin:g}..{args.hmax:g} R, face-to-face penalty "
-          f"{KAPPA:g} E2 / h, {ccx['steps']} fixed increments; diskimpact: "
-          f"params/impact.prm, penalty factor {own['penalty']}; "
-          f"{THREADS['OMP_NUM_THREADS']} thread each")
-    print(f"{'code':12s} {'epsilon':>12s} {'DoFs':>7s} {'steps':>6s} "
-          f"{'wall [s]':>9s}")
-    for name, run in (("CalculiX", ccx), ("diskimpact", own)):
-        print(f"{name:12s} {run['epsilon']:12.8f} {run['dofs']:7d} "
-              f"{run['steps']:6d} {run['seconds']:9.2f}")
-    print(f"epsilon difference (CalculiX - diskimpact): "
-          f"{ccx['epsilon'] - own['epsilon']:.2e}")
-    print(f"wall time ratio CalculiX / diskimpact: "
-          f"{ccx['seconds'] / own['seconds']:.1f}")
-    if ccx["equations"] is not None and ccx["drift"] is not None:
-        print(f"CalculiX: {ccx['equations']} equations (brick layer), total "
-              f"energy varies by {100 * ccx['drift']:.2f} % of the initial "
-              "kinetic energy")
+            reference, ccx, own = run_all(args, work)
+    report_reference(reference)
+    report_runs(args, reference, ccx, own)
+    report_comparison(reference, ccx, own)
 
 
 if __name__ == "__main__":

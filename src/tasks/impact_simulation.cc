@@ -594,6 +594,17 @@ namespace DiskImpact
       std::max(energy_error, std::abs(total - energy_initial) / energy_initial);
     energy_growth =
       std::max(energy_growth, (total - energy_initial) / energy_initial);
+    // A run whose energy runs away (a thousandfold) is stopped here rather
+    // than when its numbers overflow; a milder growth fails check_result().
+    // The values are the same on every rank.
+    if (!(energy_growth <= 1e3))
+      throw RunError(
+        "impact at v = " + approximately(v0 / c, 6) +
+        " c fails the check 'energy growth': the total energy "
+        "grew by " +
+        approximately(energy_growth) +
+        " times its initial value by t = " + approximately(time * c / R) +
+        " R/c (the time stepping is unstable for this contact)");
     series.start_row();
     for (const double value : {time * c / R,
                                x_com,
