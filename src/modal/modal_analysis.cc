@@ -74,6 +74,12 @@ namespace DiskImpact
     return op.get_dof_handler().n_dofs();
   }
 
+  const parallel::distributed::Triangulation<2> &
+  ModalAnalysis::get_triangulation() const
+  {
+    return triangulation;
+  }
+
   double
   ModalAnalysis::mesh_size() const
   {

@@ -65,6 +65,9 @@ namespace DiskImpact
 
     dealii::types::global_dof_index
     n_dofs() const;
+    /// The meridian (or disk) mesh, for a further operator on it.
+    const dealii::parallel::distributed::Triangulation<2> &
+    get_triangulation() const;
     /// Largest cell diameter.
     double
     mesh_size() const;

@@ -2,8 +2,7 @@
 
 #include "base/petsc_check.h"
 #include "base/run_error.h"
-#include "elasticity/elasticity_operator.h"
-#include "elasticity/torsion_operator.h"
+#include "elasticity/discrete_operator.h"
 
 #include <slepceps.h>
 
@@ -81,11 +80,10 @@ namespace DiskImpact
     return relative_tolerance;
   }
 
-  template <typename Operator>
   ModalBasis
-  ModalSolver::solve(const Operator    &op,
-                     const unsigned int n_wanted,
-                     const double       shift) const
+  ModalSolver::solve(const DiscreteOperator &op,
+                     const unsigned int      n_wanted,
+                     const double            shift) const
   {
     const Mat stiffness = op.stiffness_matrix();
     const Mat mass      = op.mass_matrix();
@@ -163,8 +161,4 @@ namespace DiskImpact
     return basis;
   }
 
-  template ModalBasis
-  ModalSolver::solve(const ElasticityOperator &, unsigned int, double) const;
-  template ModalBasis
-  ModalSolver::solve(const TorsionOperator &, unsigned int, double) const;
 } // namespace DiskImpact

@@ -8,6 +8,8 @@
 
 namespace DiskImpact
 {
+  class DiscreteOperator;
+
   /// Eigenpairs K phi = omega^2 M phi, ascending, phi M-orthonormal.
   struct ModalBasis
   {
@@ -51,9 +53,10 @@ namespace DiskImpact
      * TorsionOperator), whose matrices must be assembled. @p shift is the
      * (negative) shift of the spectral transformation.
      */
-    template <typename Operator>
     ModalBasis
-    solve(const Operator &op, unsigned int n_wanted, double shift) const;
+    solve(const DiscreteOperator &op,
+          unsigned int            n_wanted,
+          double                  shift) const;
 
   private:
     unsigned int n_modes            = 40;

@@ -17,23 +17,20 @@ namespace DiskImpact
 {
   using namespace dealii;
 
-  TorsionalModalAnalysis::TorsionalModalAnalysis(const BodyGeometry &geometry,
-                                                 const Material     &material,
-                                                 const unsigned int  fe_degree,
-                                                 const ModalSolver  &solver,
-                                                 MPI_Comm     communicator,
-                                                 TimerOutput &timer)
+  TorsionalModalAnalysis::TorsionalModalAnalysis(
+    const parallel::distributed::Triangulation<2> &triangulation,
+    const BodyGeometry                            &geometry,
+    const Material                                &material,
+    const unsigned int                             fe_degree,
+    const ModalSolver                             &solver,
+    TimerOutput                                   &timer)
       : geometry(geometry)
       , material(material)
       , solver(solver)
-      , communicator(communicator)
       , timer(timer)
-      , triangulation(communicator,
-                      Triangulation<2>::limit_level_difference_at_vertices)
       , op(fe_degree)
   {
-    TimerOutput::Scope scope(timer, "torsion: mesh and setup");
-    geometry.create_triangulation(triangulation);
+    TimerOutput::Scope scope(timer, "torsion: setup");
     op.setup(triangulation, geometry);
   }
 
@@ -69,7 +66,9 @@ namespace DiskImpact
           degree_shares(op.create_ghosted(basis.modes[i]), n_max);
         const unsigned int n =
           std::max_element(shares.begin(), shares.end()) - shares.begin();
-        mode.harmonic_fraction   = shares[n];
+        mode.harmonic_fraction = shares[n];
+        // Even about the equator: the odd degrees (P_n^1 has parity
+        // (-1)^(n-1)).
         mode.even_order_fraction = 0.;
         for (unsigned int k = 1; k < shares.size(); k += 2)
           mode.even_order_fraction += shares[k];
@@ -93,8 +92,7 @@ namespace DiskImpact
     const PETScWrappers::MPI::Vector &ghosted_mode,
     const unsigned int                n_max) const
   {
-    const unsigned int  degree = op.get_dof_handler().get_fe().degree;
-    const QGauss<1>     quadrature(degree + 4);
+    const QGauss<1>     quadrature(op.degree() + 4);
     FEFaceValues<2>     face_values(op.get_mapping(),
                                 op.get_dof_handler().get_fe(),
                                 quadrature,
@@ -120,7 +118,9 @@ namespace DiskImpact
             moments[n_max + 1] += w[q] * w[q] * weight;
           }
       });
-    Utilities::MPI::sum(moments, communicator, moments);
+    Utilities::MPI::sum(moments,
+                        op.get_dof_handler().get_communicator(),
+                        moments);
     // |P_n^1|^2 = 2 n (n + 1) / (2 n + 1) with the weight sin theta.
     std::vector<double> shares(n_max + 1, 0.);
     for (unsigned int n = 1; n <= n_max; ++n)

@@ -10,14 +10,14 @@
 
 #include <deal.II/distributed/tria.h>
 
-#include <string>
 #include <vector>
 
 namespace DiskImpact
 {
   /**
    * The torsional (m = 0) modes of a free sphere: the eigenpairs of
-   * TorsionOperator on the meridian mesh of the spheroidal modes, each
+   * TorsionOperator on the meridian mesh @p triangulation of the
+   * spheroidal modes (ModalAnalysis::get_triangulation()), each
    * labelled (n, l) by the Legendre degree n that carries most of its
    * surface motion, u_phi(R, theta) ~ P_n^1(cos theta), and compared with
    * Lamb's torsional frequencies (Reference::SphereTorsionalModes).
@@ -25,12 +25,13 @@ namespace DiskImpact
   class TorsionalModalAnalysis
   {
   public:
-    TorsionalModalAnalysis(const BodyGeometry  &geometry,
-                           const Material      &material,
-                           unsigned int         fe_degree,
-                           const ModalSolver   &solver,
-                           MPI_Comm             communicator,
-                           dealii::TimerOutput &timer);
+    TorsionalModalAnalysis(
+      const dealii::parallel::distributed::Triangulation<2> &triangulation,
+      const BodyGeometry                                    &geometry,
+      const Material                                        &material,
+      unsigned int                                           fe_degree,
+      const ModalSolver                                     &solver,
+      dealii::TimerOutput                                   &timer);
 
     /// The rigid rotation about the axis and the lowest @p n_elastic
     /// torsional modes.
@@ -46,12 +47,10 @@ namespace DiskImpact
     degree_shares(const dealii::PETScWrappers::MPI::Vector &ghosted_mode,
                   unsigned int                              n_max) const;
 
-    const BodyGeometry                             &geometry;
-    const Material                                 &material;
-    const ModalSolver                              &solver;
-    MPI_Comm                                        communicator;
-    dealii::TimerOutput                            &timer;
-    dealii::parallel::distributed::Triangulation<2> triangulation;
-    TorsionOperator                                 op;
+    const BodyGeometry  &geometry;
+    const Material      &material;
+    const ModalSolver   &solver;
+    dealii::TimerOutput &timer;
+    TorsionOperator      op;
   };
 } // namespace DiskImpact

@@ -97,11 +97,5 @@ namespace DiskImpact
             return lowest_labels(found, n_modes);
         }
     }
-
-    int
-    SphereTorsionalModes::z_parity(const unsigned int n)
-    {
-      return n % 2 == 1 ? 1 : -1;
-    }
   } // namespace Reference
 } // namespace DiskImpact

@@ -49,10 +49,6 @@ namespace DiskImpact
       std::vector<ModeLabel>
       lowest_modes(unsigned int n_modes, bool half_disk = false) const override;
 
-      /// +1 (even about the equator) for odd n, -1 for even n.
-      static int
-      z_parity(unsigned int n);
-
     private:
       double c_T;
       double R;

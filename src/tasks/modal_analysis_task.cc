@@ -39,55 +39,74 @@ namespace DiskImpact
       table.write(filename);
     }
 
-    /// A sphere's torsional modes: torsional_modes.csv and their table,
-    /// with the labels checked against Lamb's ordering.
+    /**
+     * The computed @p modes (rigid ones first) against @p reference: the
+     * analytic modes in their own order to @p filename, and on the terminal
+     * the largest relative error and how many leading labels equal the
+     * analytic ordering.
+     */
     void
-    run_torsional_modes(const Parameters   &parameters,
-                        MPI_Comm            communicator,
-                        TimerOutput        &timer,
-                        ConditionalOStream &pcout)
+    compare_with_analytic(const std::vector<ModeResult>  &modes,
+                          const Reference::FreeBodyModes &reference,
+                          const bool                      half_disk,
+                          const std::string              &filename,
+                          MPI_Comm                        communicator,
+                          ConditionalOStream             &pcout)
     {
-      const unsigned int n_wanted = parameters.modal_solver.n_torsional_modes();
-      TorsionalModalAnalysis torsion(parameters.geometry,
+      unsigned int n_rigid   = 0;
+      double       max_error = 0.;
+      for (const auto &mode : modes)
+        if (mode.is_rigid())
+          ++n_rigid;
+        else
+          max_error = std::max(max_error, std::abs(mode.relative_error()));
+      const auto analytic =
+        reference.lowest_modes(modes.size() - n_rigid, half_disk);
+      unsigned int n_matching = 0;
+      while (n_matching < analytic.size() &&
+             modes[n_rigid + n_matching].label == analytic[n_matching])
+        ++n_matching;
+      on_root(communicator,
+              [&]() { write_analytic_modes(reference, analytic, filename); });
+      pcout << n_rigid << " rigid-body modes, " << modes.size() - n_rigid
+            << " elastic modes, largest relative error " << max_error
+            << "\nLabels equal to the analytic ordering: first " << n_matching
+            << " of " << analytic.size() << " elastic modes" << std::endl;
+    }
+
+    /// A sphere's torsional modes on the mesh of @p analysis:
+    /// torsional_modes.csv, their table and their comparison with Lamb's.
+    void
+    run_torsional_modes(const Parameters    &parameters,
+                        const ModalAnalysis &analysis,
+                        MPI_Comm             communicator,
+                        TimerOutput         &timer,
+                        ConditionalOStream  &pcout)
+    {
+      TorsionalModalAnalysis torsion(analysis.get_triangulation(),
+                                     parameters.geometry,
                                      parameters.material,
                                      parameters.finite_element.degree,
                                      parameters.modal_solver,
-                                     communicator,
                                      timer);
-      const auto             modes = torsion.run(n_wanted);
+      const auto             modes =
+        torsion.run(parameters.modal_solver.n_torsional_modes());
+      const std::string &directory = parameters.run.output_directory;
       on_root(communicator, [&]() {
         ModalAnalysis::write_modes_csv(modes,
-                                       parameters.run.output_directory +
-                                         "/torsional_modes.csv",
+                                       directory + "/torsional_modes.csv",
                                        true);
       });
       pcout << "Torsional modes (u_phi only):\n";
       ModalAnalysis::print_table(modes, pcout);
-      const Reference::SphereTorsionalModes reference(
-        parameters.material.transverse_wave_speed(),
-        parameters.geometry.radius());
-      const auto analytic = reference.lowest_modes(n_wanted);
-      on_root(communicator, [&]() {
-        write_analytic_modes(reference,
-                             analytic,
-                             parameters.run.output_directory +
-                               "/torsional_analytic_modes.csv");
-      });
-      // The computed labels in order, as long as they equal Lamb's.
-      unsigned int n_matching = 0, matched_so_far = 0;
-      double       max_error = 0.;
-      for (const auto &mode : modes)
-        if (!mode.is_rigid())
-          {
-            max_error = std::max(max_error, std::abs(mode.relative_error()));
-            if (n_matching == matched_so_far && n_matching < analytic.size() &&
-                mode.label == analytic[n_matching])
-              ++n_matching;
-            ++matched_so_far;
-          }
-      pcout << n_wanted << " torsional modes, largest relative error "
-            << max_error << "\nLabels equal to the analytic ordering: first "
-            << n_matching << " of " << analytic.size() << std::endl;
+      compare_with_analytic(modes,
+                            Reference::SphereTorsionalModes(
+                              parameters.material.transverse_wave_speed(),
+                              parameters.geometry.radius()),
+                            false,
+                            directory + "/torsional_analytic_modes.csv",
+                            communicator,
+                            pcout);
     }
   } // namespace
 
@@ -123,37 +142,17 @@ namespace DiskImpact
       });
     }
 
-    unsigned int n_rigid   = 0;
-    double       max_error = 0.;
-    for (const auto &mode : modes)
-      if (mode.is_rigid())
-        ++n_rigid;
-      else
-        max_error = std::max(max_error, std::abs(mode.relative_error()));
     ModalAnalysis::print_table(modes, pcout);
-
-    // The analytic modes in their own order, beside the computed labels.
-    const auto reference =
-      analytic_free_modes(parameters.geometry, parameters.material);
-    const auto analytic =
-      reference->lowest_modes(modes.size() - n_rigid,
-                              parameters.geometry.is_half_disk());
-    unsigned int n_matching = 0;
-    while (n_matching < analytic.size() &&
-           modes[n_rigid + n_matching].label == analytic[n_matching])
-      ++n_matching;
-    on_root(communicator, [&]() {
-      write_analytic_modes(*reference,
-                           analytic,
-                           parameters.run.output_directory +
-                             "/analytic_modes.csv");
-    });
-    pcout << n_rigid << " rigid-body modes, " << modes.size() - n_rigid
-          << " elastic modes, largest relative error " << max_error
-          << "\nLabels equal to the analytic ordering: first " << n_matching
-          << " of " << analytic.size() << " elastic modes" << std::endl;
+    compare_with_analytic(modes,
+                          *analytic_free_modes(parameters.geometry,
+                                               parameters.material),
+                          parameters.geometry.is_half_disk(),
+                          parameters.run.output_directory +
+                            "/analytic_modes.csv",
+                          communicator,
+                          pcout);
     if (parameters.modal_solver.n_torsional_modes() > 0)
-      run_torsional_modes(parameters, communicator, timer, pcout);
+      run_torsional_modes(parameters, analysis, communicator, timer, pcout);
     timer.print_summary();
   }
 } // namespace DiskImpact
