@@ -75,6 +75,7 @@ usage: bench/peer_calculix.py [--hmin H] [--hmax H] [--steps-per-contact N]
        this)
 """
 import argparse
+import csv
 import math
 import os
 import re
@@ -442,10 +443,8 @@ def run_exe(prm):
 
 
 def read_csv(path):
-    with open(path) as f:
-        lines = f.read().splitlines()
-    header = lines[0].split(",")
-    return [dict(zip(header, line.split(","))) for line in lines[1:]]
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
 
 
 def run_reference(work):
