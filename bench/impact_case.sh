@@ -6,6 +6,8 @@
 #                             PENALTY FRACTION [TIME-STEPPING LINES...]
 #   e.g. bench/impact_case.sh /tmp/run 0.1 2 12 0.3 100 0.01 \
 #          "set Contact mass = redistributed"
+# Environment: TAU (relaxation time, default 0), DEGREE (of the elements,
+# default 2). The run's full output is left in DIR/log.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 dir=$1 v=$2 ref=$3 el=$4 grading=$5 kappa=$6 fraction=$7
@@ -24,6 +26,9 @@ subsection Material
   set Plane model     = plane stress
   set Poisson ratio   = 0.33
   set Relaxation time = ${TAU:-0}
+end
+subsection Finite element
+  set Degree = ${DEGREE:-2}
 end
 subsection Contact
   set Penalty factor = $kappa

@@ -80,7 +80,9 @@ namespace DiskImpact
     /**
      * Newton's method for u_C = y_C + S P(u_C) from @p u_C, with a
      * backtracking line search on |u_C - y_C - S P(u_C)|; true if that
-     * falls below @p tolerance (in max norm) within @p max_iterations.
+     * falls below @p tolerance (in max norm) within @p max_iterations, or
+     * if it stops decreasing (its rounding floor) with a Newton step below
+     * @p tolerance.
      * Identical on every rank (no communication).
      */
     bool
@@ -108,10 +110,15 @@ namespace DiskImpact
     apply_inverse(const dealii::PETScWrappers::MPI::Vector &r,
                   dealii::PETScWrappers::MPI::Vector       &y);
 
-    dealii::IndexSet                             owned;
-    MPI_Comm                                     communicator;
-    KSP                                          ksp = nullptr;
+    dealii::IndexSet owned;
+    MPI_Comm         communicator;
+    KSP              ksp = nullptr;
+    /// A's sequential copy, factorized instead of A on one rank.
+    Mat                                          sequential = nullptr;
     std::vector<dealii::types::global_dof_index> observed_dofs;
+    /// The positions in D of the DoFs this rank owns, and those DoFs.
+    std::vector<unsigned int>                    owned_positions;
+    std::vector<dealii::types::global_dof_index> owned_observed_dofs;
     /// C as positions in D, their columns of X and those on D.
     std::vector<unsigned int>                       contact_positions;
     std::vector<dealii::PETScWrappers::MPI::Vector> columns;

@@ -234,7 +234,22 @@ namespace DiskImpact
   void
   ImpactSimulation::set_initial_state()
   {
-    for (auto *x : {&u, &v, &a, &u_new, &v_new, &a_new, &along_normal, &b, &y})
+    for (auto *x : {&u,
+                    &v,
+                    &a,
+                    &u_new,
+                    &v_new,
+                    &a_new,
+                    &along_normal,
+                    &b,
+                    &y,
+                    &stiffness_u,
+                    &mass_u,
+                    &mass_v,
+                    &mass_a,
+                    &mass_u_new,
+                    &mass_v_new,
+                    &mass_a_new})
       *x = op.create_vector();
     u_D.reinit(zone->candidate_dofs().size());
     point_forces.reinit(zone->n_points());
@@ -261,7 +276,7 @@ namespace DiskImpact
     // (M x) . n over the mass n . M n (valid for a redistributed mass too).
     normal_momentum = op.mass_functional(along_normal);
     normal_mass     = normal_momentum * along_normal;
-    energy_initial  = factor * quadratic_form(op.mass_matrix(), v);
+    energy_initial  = factor * quadratic_form(op.mass_matrix(), v, mass_v);
     v_com_initial   = mean_along_normal(v);
   }
 
@@ -270,12 +285,21 @@ namespace DiskImpact
     const PETScWrappers::MPI::SparseMatrix &matrix,
     const PETScWrappers::MPI::Vector       &x) const
   {
+    return quadratic_form(matrix, x, product);
+  }
+
+  double
+  ImpactSimulation::quadratic_form(
+    const PETScWrappers::MPI::SparseMatrix &matrix,
+    const PETScWrappers::MPI::Vector       &x,
+    PETScWrappers::MPI::Vector             &matrix_x) const
+  {
     // On the condensed matrices, x with its constrained entries zeroed
     // gives the form of the unconstrained field.
     work = x;
     op.get_constraints().set_zero(work);
-    matrix.vmult(product, work);
-    return 0.5 * (work * product);
+    matrix.vmult(matrix_x, work);
+    return 0.5 * (work * matrix_x);
   }
 
   double
@@ -334,11 +358,12 @@ namespace DiskImpact
   {
     const auto &integrator  = parameters.time_integrator;
     const auto &constraints = op.get_constraints();
-    // Right-hand side M w - D z - af K u0.
-    integrator.inertia_vector(u, v, a, dt, work);
-    op.mass_matrix().vmult(b, work);
-    op.stiffness_matrix().vmult(product, u);
-    b.add(-integrator.old_stiffness_weight(), product);
+    // Right-hand side M w - D z - af K u0, with M w from the images of u0,
+    // v0, a0 and K u0 from record(). (They differ from M w and K u0 in the
+    // constrained rows only, which the solve keeps to themselves and
+    // distribute() overwrites.)
+    integrator.inertia_vector(mass_u, mass_v, mass_a, dt, b);
+    b.add(-integrator.old_stiffness_weight(), stiffness_u);
     if (op.has_damping())
       {
         integrator.damping_vector(u, v, a, dt, work);
@@ -348,7 +373,8 @@ namespace DiskImpact
     // The response without contact force: one solve with the factorized
     // matrix. The end state is y + X P(u1_C): a dense system on C.
     solver->solve(b, y);
-    constraints.distribute(y);
+    // The candidates' DoFs are unconstrained (ConstrainedRow), so y needs
+    // its constraints distributed only as part of the end state below.
     const Vector<double> y_D  = solver->observe(y);
     Vector<double>       u1_D = y_D;
     Vector<double>       P;
@@ -559,9 +585,14 @@ namespace DiskImpact
         dt *= 0.5;
         factorize();
       }
+    // v_new and a_new are linear combinations of fields that satisfy the
+    // (homogeneous) constraints, so they satisfy them too.
     integrator.update(u, u_new, v, a, dt, v_new, a_new);
-    op.get_constraints().distribute(v_new);
-    op.get_constraints().distribute(a_new);
+    work = u_new;
+    op.get_constraints().set_zero(work);
+    op.mass_matrix().vmult(mass_u_new, work);
+    integrator.update(
+      mass_u, mass_u_new, mass_v, mass_a, dt, mass_v_new, mass_a_new);
     impulse += dt * factor * state.force_average;
     if (op.has_damping())
       {
@@ -570,9 +601,12 @@ namespace DiskImpact
         dissipated +=
           2. * dt * factor * quadratic_form(op.damping_matrix(), work);
       }
-    u   = u_new;
-    v   = v_new;
-    a   = a_new;
+    u.swap(u_new);
+    v.swap(v_new);
+    a.swap(a_new);
+    mass_u.swap(mass_u_new);
+    mass_v.swap(mass_v_new);
+    mass_a.swap(mass_a_new);
     u_D = u1_D_new;
     point_forces.swap(point_forces_new);
     t += dt;
@@ -582,11 +616,14 @@ namespace DiskImpact
   void
   ImpactSimulation::record(const double time, const ContactState &step)
   {
-    const double kinetic = factor * quadratic_form(op.mass_matrix(), v);
-    const double strain  = factor * quadratic_form(op.stiffness_matrix(), u);
-    const double v_com   = mean_along_normal(v);
-    const double x_com   = mean_along_normal(u) / R;
-    const double total   = kinetic + strain + factor * step.energy + dissipated;
+    work = v;
+    op.get_constraints().set_zero(work);
+    const double kinetic = 0.5 * factor * (work * mass_v);
+    const double strain =
+      factor * quadratic_form(op.stiffness_matrix(), u, stiffness_u);
+    const double v_com = mean_along_normal(v);
+    const double x_com = mean_along_normal(u) / R;
+    const double total = kinetic + strain + factor * step.energy + dissipated;
     // The step's mean force (its impulse / dt): the time discretization
     // fixes this mean, not the end-of-step force (docs/impact.md).
     const double force = factor * step.force_average / force_unit;

@@ -101,6 +101,12 @@ namespace DiskImpact
     double
     quadratic_form(const dealii::PETScWrappers::MPI::SparseMatrix &matrix,
                    const dealii::PETScWrappers::MPI::Vector       &x) const;
+    /// The same, keeping the matrix times x (constrained entries zeroed) in
+    /// @p product.
+    double
+    quadratic_form(const dealii::PETScWrappers::MPI::SparseMatrix &matrix,
+                   const dealii::PETScWrappers::MPI::Vector       &x,
+                   dealii::PETScWrappers::MPI::Vector &product) const;
     /// The centre-of-mass component of x along the wall normal.
     double
     mean_along_normal(const dealii::PETScWrappers::MPI::Vector &x) const;
@@ -134,6 +140,14 @@ namespace DiskImpact
 
     dealii::PETScWrappers::MPI::Vector u, v, a, u_new, v_new, a_new,
       along_normal, normal_momentum, b, y;
+    /// K u of the current state: record() computes it for the strain
+    /// energy, the next step's right-hand side reuses it.
+    dealii::PETScWrappers::MPI::Vector stiffness_u;
+    /// M u, M v, M a (constrained entries zeroed) and their new values:
+    /// the Newmark relations are linear, so M v and M a follow from M u
+    /// by the same relations, one product with M per step.
+    dealii::PETScWrappers::MPI::Vector mass_u, mass_v, mass_a, mass_u_new,
+      mass_v_new, mass_a_new;
     /// u on the contact candidates' DoFs, at the step's start and end.
     dealii::Vector<double> u_D, u1_D_new;
     /// Law 'constraint': the point forces at the step's start and end.
