@@ -102,11 +102,11 @@ namespace DiskImpact
     quadratic_form(const dealii::PETScWrappers::MPI::SparseMatrix &matrix,
                    const dealii::PETScWrappers::MPI::Vector       &x) const;
     /// The same, keeping the matrix times x (constrained entries zeroed) in
-    /// @p product.
+    /// @p matrix_x.
     double
     quadratic_form(const dealii::PETScWrappers::MPI::SparseMatrix &matrix,
                    const dealii::PETScWrappers::MPI::Vector       &x,
-                   dealii::PETScWrappers::MPI::Vector &product) const;
+                   dealii::PETScWrappers::MPI::Vector &matrix_x) const;
     /// The centre-of-mass component of x along the wall normal.
     double
     mean_along_normal(const dealii::PETScWrappers::MPI::Vector &x) const;
