@@ -169,6 +169,19 @@ namespace DiskImpact
   }
 
   void
+  CondensedSolver::add_forces(const Vector<double>       &P,
+                              PETScWrappers::MPI::Vector &x) const
+  {
+    for (unsigned int j = 0; j < P.size(); ++j)
+      {
+        const auto dof = observed_dofs[contact_positions[j]];
+        if (owned.is_element(dof))
+          x(dof) += P[j];
+      }
+    x.compress(VectorOperation::add);
+  }
+
+  void
   CondensedSolver::add_columns(const Vector<double>       &P,
                                PETScWrappers::MPI::Vector &x) const
   {

@@ -67,6 +67,11 @@ namespace DiskImpact
     const dealii::FullMatrix<double> &
     condensed_matrix() const;
 
+    /// x += E_C P: the force P on C as a vector of all DoFs. Collective.
+    void
+    add_forces(const dealii::Vector<double>       &P,
+               dealii::PETScWrappers::MPI::Vector &x) const;
+
     /// x += X P.
     void
     add_columns(const dealii::Vector<double>       &P,

@@ -470,6 +470,7 @@ namespace DiskImpact
     if (P.size() > 0)
       solver->add_columns(P, u_new);
     constraints.distribute(u_new);
+    contact_force             = P;
     const Vector<double> u0_C = zone->restrict_to_active(u_D);
     state                     = zone
               ->step_force(u0_C,
@@ -593,6 +594,7 @@ namespace DiskImpact
     op.mass_matrix().vmult(mass_u_new, work);
     integrator.update(
       mass_u, mass_u_new, mass_v, mass_a, dt, mass_v_new, mass_a_new);
+    update_stiffness_image();
     impulse += dt * factor * state.force_average;
     if (op.has_damping())
       {
@@ -614,16 +616,38 @@ namespace DiskImpact
   }
 
   void
+  ImpactSimulation::update_stiffness_image()
+  {
+    const auto &integrator = parameters.time_integrator;
+    if (op.has_damping() ||
+        parameters.contact.law_kind() == WallLawKind::constraint)
+      {
+        quadratic_form(op.stiffness_matrix(), u_new, stiffness_u);
+        return;
+      }
+    // The step solved A u1 = b + E_C P with A = cK K + cM M, so in the
+    // unconstrained rows K u1 = (b + E_C P - cM M u1) / cK: no product
+    // with K. (The constrained rows, which differ, are zeroed in u where
+    // it meets them and kept to themselves by the solve.)
+    stiffness_u = b;
+    if (contact_force.size() > 0)
+      solver->add_forces(contact_force, stiffness_u);
+    stiffness_u.add(-integrator.mass_coefficient(dt), mass_u_new);
+    stiffness_u /= integrator.stiffness_coefficient();
+  }
+
+  void
   ImpactSimulation::record(const double time, const ContactState &step)
   {
     work = v;
     op.get_constraints().set_zero(work);
     const double kinetic = 0.5 * factor * (work * mass_v);
-    const double strain =
-      factor * quadratic_form(op.stiffness_matrix(), u, stiffness_u);
-    const double v_com = mean_along_normal(v);
-    const double x_com = mean_along_normal(u) / R;
-    const double total = kinetic + strain + factor * step.energy + dissipated;
+    work                 = u;
+    op.get_constraints().set_zero(work);
+    const double strain = 0.5 * factor * (work * stiffness_u);
+    const double v_com  = mean_along_normal(v);
+    const double x_com  = mean_along_normal(u) / R;
+    const double total  = kinetic + strain + factor * step.energy + dissipated;
     // The step's mean force (its impulse / dt): the time discretization
     // fixes this mean, not the end-of-step force (docs/impact.md).
     const double force = factor * step.force_average / force_unit;

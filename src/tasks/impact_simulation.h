@@ -88,6 +88,10 @@ namespace DiskImpact
     /// Two bodies: each one's momentum balance and vibration energy.
     void
     finish_pair();
+    /// K u_new into stiffness_u, from the step's linear system where it
+    /// holds, else by a product.
+    void
+    update_stiffness_image();
     /// Throw a RunError if the result cannot be right: epsilon outside
     /// [0, 1], the energy balance of an energy-conserving scheme beyond its
     /// tolerance, contact time or delta_max beyond a factor 2 of the 1-DOF
@@ -140,9 +144,11 @@ namespace DiskImpact
 
     dealii::PETScWrappers::MPI::Vector u, v, a, u_new, v_new, a_new,
       along_normal, normal_momentum, b, y;
-    /// K u of the current state: record() computes it for the strain
-    /// energy, the next step's right-hand side reuses it.
+    /// K u of the current state (advance()): for the strain energy and the
+    /// next step's right-hand side.
     dealii::PETScWrappers::MPI::Vector stiffness_u;
+    /// The last step's contact force P on C (laws other than 'constraint').
+    dealii::Vector<double> contact_force;
     /// M u, M v, M a (constrained entries zeroed) and their new values:
     /// the Newmark relations are linear, so M v and M a follow from M u
     /// by the same relations, one product with M per step.
