@@ -208,6 +208,9 @@ namespace DiskImpact
       op.set_massless_edge_zone(geometry.contact_point(),
                                 1.5 * largest_half_width);
     op.assemble(materials());
+    constraint_map = std::make_unique<ConstraintMap>(op.get_constraints(),
+                                                     op.locally_owned_dofs(),
+                                                     communicator);
     summary.massless_dofs = op.n_massless_dofs();
     summary.n_dofs        = op.get_dof_handler().n_dofs();
     // The modes to project on, of the operator the time stepping uses.
@@ -297,7 +300,7 @@ namespace DiskImpact
     // On the condensed matrices, x with its constrained entries zeroed
     // gives the form of the unconstrained field.
     work = x;
-    op.get_constraints().set_zero(work);
+    constraint_map->set_zero(work);
     matrix.vmult(matrix_x, work);
     return 0.5 * (work * matrix_x);
   }
@@ -356,12 +359,11 @@ namespace DiskImpact
   bool
   ImpactSimulation::attempt_step()
   {
-    const auto &integrator  = parameters.time_integrator;
-    const auto &constraints = op.get_constraints();
+    const auto &integrator = parameters.time_integrator;
     // Right-hand side M w - D z - af K u0, with M w from the images of u0,
-    // v0, a0 and K u0 from record(). (They differ from M w and K u0 in the
-    // constrained rows only, which the solve keeps to themselves and
-    // distribute() overwrites.)
+    // v0, a0 and K u0 from update_stiffness_image(). (They differ from M w and
+    // K u0 in the constrained rows only, which the solve keeps to themselves
+    // and distribute() overwrites.)
     integrator.inertia_vector(mass_u, mass_v, mass_a, dt, b);
     b.add(-integrator.old_stiffness_weight(), stiffness_u);
     if (op.has_damping())
@@ -419,7 +421,7 @@ namespace DiskImpact
         u_new = y;
         if (P.size() > 0)
           solver->add_columns(P, u_new);
-        constraints.distribute(u_new);
+        constraint_map->distribute(u_new);
         state = zone->constraint_state(point_forces,
                                        point_forces_new,
                                        zone->restrict_to_active(u1_D),
@@ -469,7 +471,7 @@ namespace DiskImpact
     u_new = y;
     if (P.size() > 0)
       solver->add_columns(P, u_new);
-    constraints.distribute(u_new);
+    constraint_map->distribute(u_new);
     contact_force             = P;
     const Vector<double> u0_C = zone->restrict_to_active(u_D);
     state                     = zone
@@ -590,7 +592,7 @@ namespace DiskImpact
     // (homogeneous) constraints, so they satisfy them too.
     integrator.update(u, u_new, v, a, dt, v_new, a_new);
     work = u_new;
-    op.get_constraints().set_zero(work);
+    constraint_map->set_zero(work);
     op.mass_matrix().vmult(mass_u_new, work);
     integrator.update(
       mass_u, mass_u_new, mass_v, mass_a, dt, mass_v_new, mass_a_new);
@@ -640,10 +642,10 @@ namespace DiskImpact
   ImpactSimulation::record(const double time, const ContactState &step)
   {
     work = v;
-    op.get_constraints().set_zero(work);
+    constraint_map->set_zero(work);
     const double kinetic = 0.5 * factor * (work * mass_v);
     work                 = u;
-    op.get_constraints().set_zero(work);
+    constraint_map->set_zero(work);
     const double strain = 0.5 * factor * (work * stiffness_u);
     const double v_com  = mean_along_normal(v);
     const double x_com  = mean_along_normal(u) / R;

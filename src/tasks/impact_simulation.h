@@ -5,6 +5,7 @@
 #include "contact/contact_zone.h"
 #include "dynamics/condensed_solver.h"
 #include "dynamics/massless_zone.h"
+#include "elasticity/constraint_map.h"
 #include "elasticity/elasticity_operator.h"
 #include "modal/modal_projection.h"
 #include "output/csv_table.h"
@@ -141,6 +142,8 @@ namespace DiskImpact
     std::unique_ptr<BodyMotion>      bodies;
     std::unique_ptr<ModalProjection> projection;
     std::unique_ptr<CondensedSolver> solver;
+    /// op's constraints as a matrix, for the time loop.
+    std::unique_ptr<ConstraintMap> constraint_map;
 
     dealii::PETScWrappers::MPI::Vector u, v, a, u_new, v_new, a_new,
       along_normal, normal_momentum, b, y;

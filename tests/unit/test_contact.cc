@@ -6,10 +6,10 @@
 #include "contact/contact.h"
 #include "contact/contact_operator.h"
 #include "elasticity/elasticity_operator.h"
+#include "half_disk.h"
 #include "reference/log_contact_law.h"
 
 #include <deal.II/base/function_parser.h>
-#include <deal.II/base/parameter_handler.h>
 
 #include <deal.II/distributed/tria.h>
 
@@ -140,14 +140,7 @@ TEST_CASE("exponential law: pressure, energy and the discrete gradient",
 TEST_CASE("contact tangent is the derivative of the contact residual",
           "[contact][fe]")
 {
-  dealii::ParameterHandler prm;
-  BodyGeometry::declare_parameters(prm);
-  prm.enter_subsection("Geometry");
-  prm.set("Domain", "half disk");
-  prm.set("Global refinements", "3");
-  prm.leave_subsection();
-  BodyGeometry geometry;
-  geometry.parse_parameters(prm);
+  const BodyGeometry geometry = half_disk(3);
 
   dealii::parallel::distributed::Triangulation<2> triangulation(MPI_COMM_WORLD);
   geometry.create_triangulation(triangulation);

@@ -6,10 +6,9 @@
 #include "dynamics/condensed_solver.h"
 #include "elasticity/elasticity_operator.h"
 #include "elasticity/material.h"
+#include "half_disk.h"
 #include "reference/log_contact_law.h"
 #include "reference/one_dof_impact.h"
-
-#include <deal.II/base/parameter_handler.h>
 
 #include <deal.II/distributed/tria.h>
 
@@ -26,15 +25,7 @@ using namespace DiskImpact;
 TEST_CASE("condensed solver solves A u = b + E_C P(u_C), P nonlinear",
           "[impact][fe]")
 {
-  dealii::ParameterHandler prm;
-  BodyGeometry::declare_parameters(prm);
-  prm.enter_subsection("Geometry");
-  prm.set("Domain", "half disk");
-  prm.set("Global refinements", "2");
-  prm.set("Contact refinements", "2");
-  prm.leave_subsection();
-  BodyGeometry geometry;
-  geometry.parse_parameters(prm);
+  const BodyGeometry                              geometry = half_disk(2, 2);
   dealii::parallel::distributed::Triangulation<2> triangulation(
     MPI_COMM_WORLD,
     dealii::Triangulation<2>::limit_level_difference_at_vertices);

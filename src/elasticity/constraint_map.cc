@@ -1,0 +1,65 @@
+#include "elasticity/constraint_map.h"
+
+#include "base/petsc_check.h"
+
+#include <deal.II/base/mpi.h>
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+
+namespace DiskImpact
+{
+  using namespace dealii;
+
+  ConstraintMap::ConstraintMap(const AffineConstraints<double> &constraints,
+                               const IndexSet                  &locally_owned,
+                               MPI_Comm                         communicator)
+      : mask(locally_owned, communicator)
+      , inhomogeneity(locally_owned, communicator)
+      , mapped(locally_owned, communicator)
+  {
+    const auto             n = locally_owned.size();
+    DynamicSparsityPattern pattern(n, n, locally_owned);
+    bool                   inhomogeneous = false;
+    for (const auto i : locally_owned)
+      if (const auto *entries = constraints.get_constraint_entries(i))
+        {
+          for (const auto &[j, weight] : *entries)
+            pattern.add(i, j);
+          inhomogeneous |= constraints.get_inhomogeneity(i) != 0.;
+        }
+      else
+        pattern.add(i, i);
+    map.reinit(locally_owned, locally_owned, pattern, communicator);
+    for (const auto i : locally_owned)
+      if (const auto *entries = constraints.get_constraint_entries(i))
+        {
+          for (const auto &[j, weight] : *entries)
+            map.set(i, j, weight);
+          inhomogeneity(i) = constraints.get_inhomogeneity(i);
+        }
+      else
+        {
+          map.set(i, i, 1.);
+          mask(i) = 1.;
+        }
+    map.compress(VectorOperation::insert);
+    mask.compress(VectorOperation::insert);
+    inhomogeneity.compress(VectorOperation::insert);
+    homogeneous = !Utilities::MPI::logical_or(inhomogeneous, communicator);
+  }
+
+  void
+  ConstraintMap::distribute(PETScWrappers::MPI::Vector &x) const
+  {
+    map.vmult(mapped, x);
+    if (!homogeneous)
+      mapped += inhomogeneity;
+    x.swap(mapped);
+  }
+
+  void
+  ConstraintMap::set_zero(PETScWrappers::MPI::Vector &x) const
+  {
+    check_petsc(VecPointwiseMult(x, x, mask), "VecPointwiseMult");
+  }
+} // namespace DiskImpact
