@@ -2,8 +2,6 @@
 
 #include "base/petsc_check.h"
 
-#include <deal.II/base/mpi.h>
-
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 namespace DiskImpact
@@ -19,16 +17,16 @@ namespace DiskImpact
   {
     const auto             n = locally_owned.size();
     DynamicSparsityPattern pattern(n, n, locally_owned);
-    bool                   inhomogeneous = false;
     for (const auto i : locally_owned)
-      if (const auto *entries = constraints.get_constraint_entries(i))
-        {
-          for (const auto &[j, weight] : *entries)
-            pattern.add(i, j);
-          inhomogeneous |= constraints.get_inhomogeneity(i) != 0.;
-        }
-      else
-        pattern.add(i, i);
+      {
+        if (const auto *entries = constraints.get_constraint_entries(i))
+          {
+            for (const auto &[j, weight] : *entries)
+              pattern.add(i, j);
+          }
+        else
+          pattern.add(i, i);
+      }
     map.reinit(locally_owned, locally_owned, pattern, communicator);
     for (const auto i : locally_owned)
       if (const auto *entries = constraints.get_constraint_entries(i))
@@ -45,15 +43,13 @@ namespace DiskImpact
     map.compress(VectorOperation::insert);
     mask.compress(VectorOperation::insert);
     inhomogeneity.compress(VectorOperation::insert);
-    homogeneous = !Utilities::MPI::logical_or(inhomogeneous, communicator);
   }
 
   void
   ConstraintMap::distribute(PETScWrappers::MPI::Vector &x) const
   {
     map.vmult(mapped, x);
-    if (!homogeneous)
-      mapped += inhomogeneity;
+    mapped += inhomogeneity;
     x.swap(mapped);
   }
 

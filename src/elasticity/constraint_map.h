@@ -43,6 +43,5 @@ namespace DiskImpact
     dealii::PETScWrappers::MPI::SparseMatrix   map;
     dealii::PETScWrappers::MPI::Vector         mask, inhomogeneity;
     mutable dealii::PETScWrappers::MPI::Vector mapped;
-    bool                                       homogeneous = true;
   };
 } // namespace DiskImpact
