@@ -42,6 +42,7 @@ import argparse
 import csv
 import math
 import os
+import re
 import subprocess
 import time
 
@@ -80,7 +81,8 @@ def load_of(radius):
 
 
 def run(diskimpact, directory, nu, kappa, n, grading):
-    """D_com and D_diameter (arrays over CONTACT_RADII) of one run."""
+    """D_com and D_diameter (arrays over CONTACT_RADII) of one run, and the
+    derived D0 of both (printed by the run, docs/sphere.md)."""
     name = f"nu{nu}_k{kappa:g}_n{n}_g{grading}"
     out = os.path.join(directory, name)
     prm = os.path.join(directory, name + ".prm")
@@ -88,11 +90,16 @@ def run(diskimpact, directory, nu, kappa, n, grading):
         f.write(PRM.format(out=out, nu=nu, kappa=kappa, n=n, grading=grading,
                            loads=", ".join(f"{load_of(a):.16e}"
                                            for a in CONTACT_RADII)))
-    subprocess.run([diskimpact, prm], check=True, stdout=subprocess.DEVNULL)
+    log = subprocess.run([diskimpact, prm], check=True, capture_output=True,
+                         text=True).stdout
     with open(os.path.join(out, "contact_law.csv"), newline="") as f:
         rows = list(csv.DictReader(f))
     rows.sort(key=lambda r: float(r["load"]))
-    return {c: np.array([float(r[c]) for r in rows]) for c in CONSTANTS}
+    values = {c: np.array([float(r[c]) for r in rows]) for c in CONSTANTS}
+    line = re.search(r"D0 = (\S+) \(com\), (\S+) \(diameter\)", log)
+    values["derived"] = {"D_com": float(line.group(1)),
+                         "D_diameter": float(line.group(2))}
+    return values
 
 
 def derived_log_coefficient(nu):
@@ -126,6 +133,7 @@ def study(diskimpact, directory, nu):
             for k, n, g in [(400, 16, 0.3), (1600, 16, 0.3), (400, 32, 0.3),
                             (1600, 32, 0.3), (1600, 16, 0.15)]}
     result = {}
+    derived = runs[(400, 16, 0.3)]["derived"]
     for c in CONSTANTS:
         best = extrapolated(runs[(400, 32, 0.3)][c], runs[(1600, 32, 0.3)][c])
         coarse = extrapolated(runs[(400, 16, 0.3)][c], runs[(1600, 16, 0.3)][c])
@@ -146,7 +154,8 @@ def study(diskimpact, directory, nu):
             }
             residual = best - (value[0] + value[1] * np.log(CONTACT_RADII))
             result[(c, fixed is not None)] = (value, sum(parts.values()),
-                                              parts, best, residual, bar)
+                                              parts, best, residual, bar,
+                                              derived[c])
     return result
 
 
@@ -163,12 +172,15 @@ def main():
         result = study(os.path.abspath(a.diskimpact), a.output, nu)
         print(f"nu = {nu:4.2f}  derived D1 = "
               f"{derived_log_coefficient(nu): .5f}")
-        for (c, fixed), (value, error, parts, best, residual,
-                         bar) in result.items():
+        for (c, fixed), (value, error, parts, best, residual, bar,
+                         closed_form) in result.items():
             label = "D1 derived" if fixed else "D1 fitted "
             print(f"  {c:10s} {label}  D0 = {value[0]: .4f} +- "
                   f"{error[0]:.4f}   D1 = {value[1]: .5f}" +
                   ("" if fixed else f" +- {error[1]:.5f}"))
+            if fixed:
+                print(f"    derived D0 = {closed_form: .6f}: measured - "
+                      f"derived = {value[0] - closed_form: .1e}")
             print("    error parts (D0, D1): " + ", ".join(
                 f"{k} {v[0]:.1e} {v[1]:.1e}" for k, v in parts.items())
                 + "; fit residuals " + ", ".join(f"{v:.1e}" for v in residual))
@@ -181,12 +193,13 @@ def main():
                           f"{b / abs(v):.1%}" for b, v in zip(bar, best))
                       + ")")
             table.append([nu, c, "derived" if fixed else "fitted", value[0],
-                          error[0], value[1], 0.0 if fixed else error[1]])
+                          error[0], value[1], 0.0 if fixed else error[1],
+                          closed_form])
     with open(os.path.join(a.output, "sphere_contact_constants.csv"), "w",
               newline="") as f:
         w = csv.writer(f)
         w.writerow(["poisson_ratio", "constant", "D1_source", "D0",
-                    "D0_error", "D1", "D1_error"])
+                    "D0_error", "D1", "D1_error", "D0_derived"])
         w.writerows(table)
     print(f"wrote {a.output}/sphere_contact_constants.csv "
           f"({time.time() - start:.0f} s)")

@@ -71,6 +71,17 @@ namespace DiskImpact
         tolerance);
     }
 
+    std::function<double(double, double)>
+    kelvin_voigt_unloading_force(const ForceLaw &law,
+                                 const double    relaxation_time)
+    {
+      return [law, relaxation_time](const double xi, const double xi_dot) {
+        if (xi_dot >= 0.)
+          return relaxation_time * xi_dot * law.derivative(xi);
+        return law.force(xi + relaxation_time * xi_dot) - law.force(xi);
+      };
+    }
+
     Collision
     collide(const double                                 mass,
             const double                                 velocity,

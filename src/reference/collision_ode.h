@@ -53,6 +53,20 @@ namespace DiskImpact
             EndCriterion    end,
             double          tolerance = 1e-13);
 
+    /**
+     * The dissipative force f_d(xi, xi') of a Kelvin-Voigt body with one
+     * relaxation time @p relaxation_time, quasistatic (docs/sphere.md,
+     * "Kelvin-Voigt unloading"): u + tau u' is the elastic field of the
+     * current load, so while the contact grows (xi' >= 0) the force is
+     * F(xi) + tau xi' F'(xi) (Lee and Radok; seed 003's eq. 5 with A = tau),
+     * and while it shrinks the edge must stay free of tension, which sets
+     * the elastic contact of the approach xi + tau xi': F(xi + tau xi')
+     * (zero once xi + tau xi' <= 0). Returned as f_d = total - F(xi) for
+     * collide().
+     */
+    std::function<double(double, double)>
+    kelvin_voigt_unloading_force(const ForceLaw &law, double relaxation_time);
+
     /// The same with any dissipative force f_d(xi, xi'):
     /// m xi'' + F(xi) + f_d(xi, xi') = 0.
     Collision

@@ -7,6 +7,7 @@
 #include "output/csv_table.h"
 #include "reference/hertz_impact.h"
 #include "reference/log_contact_law.h"
+#include "reference/sphere_finite_size.h"
 #include "reference/two_body_contact.h"
 #include "reference/viscoelastic_spheres.h"
 #include "reference/wall_contact_theory.h"
@@ -86,7 +87,10 @@ namespace DiskImpact
                       "(1 + nu2)/4, 'fit' for the earlier fit C = -1 - 2/pi "
                       "- nu2/4, or a number. Sphere: the finite-size constant "
                       "D of delta = delta_Hertz + D P / (E* R), 'exact' for "
-                      "Hertz's law (D = 0), or a number.");
+                      "Hertz's law (D = 0), 'finite size' for the derived "
+                      "D = D0 + D1 ln(a/R) at the contact radius of Hertz's "
+                      "largest approach (one sphere on the wall), or a "
+                      "number.");
     prm.declare_entry("Output interval",
                       "20",
                       Patterns::Integer(0),
@@ -172,7 +176,8 @@ namespace DiskImpact
     resume_sweep            = prm.get_bool("Resume");
     prm.leave_subsection();
     check_velocities(1.);
-    parse_contact_law_constant(contact_law_constant, 0., false);
+    if (contact_law_constant != "finite size")
+      parse_contact_law_constant(contact_law_constant, 0., false);
   }
 
   void
@@ -250,10 +255,51 @@ namespace DiskImpact
   double
   Impact::contact_law_constant_value(const Parameters &parameters) const
   {
+    if (contact_law_constant == "finite size")
+      return finite_size_constant(parameters, hertz_contact_radius(parameters));
     return parse_contact_law_constant(
       contact_law_constant,
       parameters.material.in_plane_poisson_ratio(),
       parameters.geometry.is_axisymmetric());
+  }
+
+  double
+  Impact::hertz_contact_radius(const Parameters &parameters) const
+  {
+    // Hertz's impact of the sphere on the wall, or of the pair with the
+    // reduced mass, E_eff = 1 / (1/E1* + 1/E2*) and R_eff = R1 R2 / (R1 + R2);
+    // a^2 = R_eff delta_max.
+    const auto  &material = parameters.material;
+    const double v0       = impact_velocity * material.velocity_unit();
+    double       R        = parameters.geometry.radius();
+    double       mass     = material.density() * parameters.geometry.volume();
+    double       modulus  = material.in_plane_young_modulus();
+    const auto  &partner  = parameters.partner;
+    if (partner.is_body())
+      {
+        const double R2 = partner.radius();
+        const double m2 = partner.material().density() *
+                          parameters.geometry.with_radius(R2).volume();
+        R       = R * R2 / (R + R2);
+        mass    = mass * m2 / (mass + m2);
+        modulus = 1. / (1. / modulus +
+                        1. / partner.material().in_plane_young_modulus());
+      }
+    return std::sqrt(
+      R * Reference::hertz_sphere_impact(mass, modulus, R, v0).max_overlap);
+  }
+
+  double
+  Impact::finite_size_constant(const Parameters &body,
+                               const double      contact_radius) const
+  {
+    require(body.geometry.is_axisymmetric(),
+            "Impact: 'Contact law constant = finite size' is the sphere's "
+            "law; a disk takes 'exact', 'fit' or a number");
+    // D = D0 + D1 ln(a/R) (docs/sphere.md, "The finite-size term, derived").
+    return Reference::sphere_finite_size_term(
+      Reference::sphere_finite_size_constants(body.material.poisson_ratio()),
+      contact_radius / body.geometry.radius());
   }
 
   CollisionEstimate
@@ -295,6 +341,18 @@ namespace DiskImpact
                 ->viscous_impact(
                   mass, v0, E2, R, C, tau, Reference::EndCriterion::overlap)
                 .epsilon;
+            // The same law while the contact grows, F(xi + tau xi') while
+            // it shrinks (a tension-free edge).
+            const auto law = theory->force_law(E2, R, C);
+            estimate.one_dof_epsilon_unloading =
+              Reference::collide(mass,
+                                 v0,
+                                 law,
+                                 Reference::kelvin_voigt_unloading_force(law,
+                                                                         tau),
+                                 Reference::EndCriterion::force,
+                                 1e-12)
+                .epsilon;
             estimate.one_dof_contact_time = viscous.contact_time * c / R;
             estimate.one_dof_delta_max    = viscous.max_overlap / R;
           }
@@ -303,11 +361,12 @@ namespace DiskImpact
       {
         // Beyond the disk's log law: no 1-DOF collision; the contact time
         // and load of seed 001's eq. 61.
-        estimate.one_dof_contact_time    = std::nan("");
-        estimate.one_dof_delta_max       = std::nan("");
-        estimate.one_dof_epsilon         = std::nan("");
-        estimate.one_dof_epsilon_overlap = std::nan("");
-        const double speed               = impact_velocity;
+        estimate.one_dof_contact_time      = std::nan("");
+        estimate.one_dof_delta_max         = std::nan("");
+        estimate.one_dof_epsilon           = std::nan("");
+        estimate.one_dof_epsilon_overlap   = std::nan("");
+        estimate.one_dof_epsilon_unloading = std::nan("");
+        const double speed                 = impact_velocity;
         const double delta    = speed * R * std::sqrt(std::log(4. / speed));
         estimate.contact_time = M_PI * delta / v0;
         estimate.largest_compression = delta;
@@ -328,7 +387,10 @@ namespace DiskImpact
              contact_law_constant_value(parameters)},
             {partner.radius(),
              partner.material().in_plane_young_modulus(),
-             contact_law_constant_value(partner_only)}};
+             contact_law_constant == "finite size" ?
+               finite_size_constant(partner_only,
+                                    hertz_contact_radius(parameters)) :
+               contact_law_constant_value(partner_only)}};
   }
 
   CollisionEstimate
@@ -396,10 +458,11 @@ namespace DiskImpact
               log_sum(std::sqrt(4. * eq.radius * one_dof.max_compression));
             one_dof.contact_time = M_PI * one_dof.max_compression / v0;
           }
-        estimate.one_dof_contact_time    = std::nan("");
-        estimate.one_dof_delta_max       = std::nan("");
-        estimate.one_dof_epsilon         = std::nan("");
-        estimate.one_dof_epsilon_overlap = std::nan("");
+        estimate.one_dof_contact_time      = std::nan("");
+        estimate.one_dof_delta_max         = std::nan("");
+        estimate.one_dof_epsilon           = std::nan("");
+        estimate.one_dof_epsilon_overlap   = std::nan("");
+        estimate.one_dof_epsilon_unloading = std::nan("");
       }
     estimate.contact_time        = one_dof.contact_time;
     estimate.largest_compression = one_dof.max_compression;
@@ -415,8 +478,9 @@ namespace DiskImpact
     const double tau = parameters.material.relaxation_time();
     if (tau > 0. || partner.material().relaxation_time() > 0.)
       {
-        estimate.one_dof_epsilon         = std::nan("");
-        estimate.one_dof_epsilon_overlap = std::nan("");
+        estimate.one_dof_epsilon           = std::nan("");
+        estimate.one_dof_epsilon_overlap   = std::nan("");
+        estimate.one_dof_epsilon_unloading = std::nan("");
         if (within_law && tau == partner.material().relaxation_time())
           {
             const auto law = Reference::two_body_force_law(sphere, body, other);
@@ -426,6 +490,14 @@ namespace DiskImpact
             estimate.one_dof_epsilon_overlap =
               Reference::collide(
                 mu, v0, law, tau, Reference::EndCriterion::overlap)
+                .epsilon;
+            estimate.one_dof_epsilon_unloading =
+              Reference::collide(mu,
+                                 v0,
+                                 law,
+                                 Reference::kelvin_voigt_unloading_force(law,
+                                                                         tau),
+                                 Reference::EndCriterion::force)
                 .epsilon;
             estimate.one_dof_contact_time = viscous.contact_time * c / R;
             estimate.one_dof_delta_max    = viscous.max_overlap / R;
@@ -550,7 +622,8 @@ namespace DiskImpact
                     "one_dof_epsilon_overlap",
                     "vibration_fraction",
                     "partner_vibration_fraction",
-                    "momentum_error"});
+                    "momentum_error",
+                    "one_dof_epsilon_unloading"});
     table.start_row();
     for (const double value : {s.velocity,
                                s.epsilon,
@@ -574,6 +647,7 @@ namespace DiskImpact
     table.add(s.vibration_fraction);
     table.add(s.partner_vibration_fraction);
     table.add(s.momentum_error);
+    table.add(s.one_dof_epsilon_unloading);
     return table;
   }
 } // namespace DiskImpact

@@ -44,6 +44,7 @@ namespace DiskImpact
     double       one_dof_delta_max    = 0.; ///< 1-DOF log law, / R
     double       one_dof_epsilon      = 1.; ///< 1-DOF law with viscosity
     double one_dof_epsilon_overlap    = 1.; ///< the same, ended at zero overlap
+    double one_dof_epsilon_unloading  = 1.; ///< Kelvin-Voigt unloading law
     /// The energy left in the body's vibration / E(0); with a partner
     /// also the partner's, and |m1 v1 + m2 v2| / (m* v_i) at the end (NaN
     /// for a wall), m* = m1 m2 / (m1 + m2).
@@ -63,6 +64,8 @@ namespace DiskImpact
     double one_dof_delta_max       = 0.; ///< [R]; NaN beyond the log law
     double one_dof_epsilon         = 1.; ///< with viscosity; NaN beyond it
     double one_dof_epsilon_overlap = 1.; ///< ended at zero overlap
+    /// with the Kelvin-Voigt unloading law (kelvin_voigt_unloading_force())
+    double one_dof_epsilon_unloading = 1.;
   };
 
   /**
@@ -140,6 +143,16 @@ namespace DiskImpact
     /// The constant of the 1-DOF model's wall law: a disk's C, a sphere's D.
     double
     contact_law_constant_value(const Parameters &parameters) const;
+
+    /// The contact radius of Hertz's largest approach at the impact speed:
+    /// the sphere on the wall, or the pair (subsection Partner).
+    double
+    hertz_contact_radius(const Parameters &parameters) const;
+
+    /// A sphere's derived finite-size constant D = D0 + D1 ln(a/R) at
+    /// contact radius @p contact_radius; @p body gives R and nu.
+    double
+    finite_size_constant(const Parameters &body, double contact_radius) const;
 
     /// The body and its partner (subsection Partner) as the two-body law
     /// sees them: radius, modulus (E2 of a disk, E* of a sphere) and the

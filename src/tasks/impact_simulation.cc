@@ -163,13 +163,14 @@ namespace DiskImpact
   void
   ImpactSimulation::estimate_collision()
   {
-    const auto estimate             = impact.estimate_collision(parameters);
-    contact_time_estimate           = estimate.contact_time;
-    approach_estimate               = estimate.largest_compression;
-    summary.one_dof_contact_time    = estimate.one_dof_contact_time;
-    summary.one_dof_delta_max       = estimate.one_dof_delta_max;
-    summary.one_dof_epsilon         = estimate.one_dof_epsilon;
-    summary.one_dof_epsilon_overlap = estimate.one_dof_epsilon_overlap;
+    const auto estimate               = impact.estimate_collision(parameters);
+    contact_time_estimate             = estimate.contact_time;
+    approach_estimate                 = estimate.largest_compression;
+    summary.one_dof_contact_time      = estimate.one_dof_contact_time;
+    summary.one_dof_delta_max         = estimate.one_dof_delta_max;
+    summary.one_dof_epsilon           = estimate.one_dof_epsilon;
+    summary.one_dof_epsilon_overlap   = estimate.one_dof_epsilon_overlap;
+    summary.one_dof_epsilon_unloading = estimate.one_dof_epsilon_unloading;
   }
 
   void

@@ -36,7 +36,8 @@ namespace DiskImpact
         << ", triangular solves " << s.triangular_solves << "\n"
         << "  epsilon = " << s.epsilon << " (" << model << ": "
         << s.one_dof_epsilon
-        << "; ended at zero overlap: " << s.one_dof_epsilon_overlap << ")\n"
+        << "; ended at zero overlap: " << s.one_dof_epsilon_overlap
+        << "; unloading law: " << s.one_dof_epsilon_unloading << ")\n"
         << "  contact time = " << s.contact_time << " R/c (" << model << ": "
         << s.one_dof_contact_time << ")\n"
         << "  delta_max = " << s.delta_max << " R (" << model << ": "

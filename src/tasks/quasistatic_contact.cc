@@ -9,6 +9,7 @@
 #include "output/atomic_file.h"
 #include "output/csv_table.h"
 #include "output/state_output.h"
+#include "reference/sphere_finite_size.h"
 #include "reference/two_body_contact.h"
 #include "reference/wall_contact_theory.h"
 #include "tasks/impact.h"
@@ -462,9 +463,18 @@ namespace DiskImpact
         pcout << line.str() << std::flush;
       }
     if (parameters.geometry.is_axisymmetric())
-      pcout << "Sphere: D = (delta - delta_Hertz) E* R / P, delta_Hertz = "
-               "(9 P^2 / (16 R E*^2))^(1/3)"
-            << std::endl;
+      {
+        const auto derived = Reference::sphere_finite_size_constants(
+          parameters.material.poisson_ratio());
+        std::ostringstream line;
+        line << std::fixed << std::setprecision(6)
+             << "Sphere: D = (delta - delta_Hertz) E* R / P, delta_Hertz = "
+                "(9 P^2 / (16 R E*^2))^(1/3)\n"
+             << "Derived (docs/sphere.md): D = D0 + D1 ln(a/R), D1 = "
+             << derived.log_coefficient << ", D0 = " << derived.centre_of_mass
+             << " (com), " << derived.diameter << " (diameter)\n";
+        pcout << line.str() << std::flush;
+      }
     else
       pcout << "Seed 001, eq. 57: C = -1 - nu2 = " << -1. - nu2 << std::endl;
     on_root(communicator, [&]() {

@@ -4,6 +4,7 @@
 usage: check_impact.py summary.csv [--epsilon E TOL] [--energy TOL]
        [--impulse TOL] [--one-dof TOL] [--factorizations N]
        [--solves-per-step MAX] [--one-dof-epsilon TOL]
+       [--one-dof-unloading TOL [--seed-law-off MIN]]
 """
 import argparse
 import csv
@@ -18,6 +19,12 @@ p.add_argument("--one-dof", type=float,
                help="relative bound on contact time and delta_max vs the 1-DOF model")
 p.add_argument("--one-dof-epsilon", type=float,
                help="bound on |epsilon - one_dof_epsilon| (viscoelastic)")
+p.add_argument("--one-dof-unloading", type=float,
+               help="bound on |epsilon - one_dof_epsilon_unloading| "
+                    "(viscoelastic, the tension-free unloading law)")
+p.add_argument("--seed-law-off", type=float,
+               help="lower bound on |epsilon - one_dof_epsilon|: the case "
+                    "tells the two laws apart")
 p.add_argument("--factorizations", type=int)
 p.add_argument("--solves-per-step", type=float,
                help="bound on triangular_solves / steps (solves with the "
@@ -43,6 +50,14 @@ if a.one_dof_epsilon is not None:
     diff = float(s["epsilon"]) - float(s["one_dof_epsilon"])
     checks.append(("epsilon - 1-DOF epsilon", diff,
                    abs(diff) <= a.one_dof_epsilon))
+if a.one_dof_unloading is not None:
+    diff = float(s["epsilon"]) - float(s["one_dof_epsilon_unloading"])
+    checks.append(("epsilon - 1-DOF unloading law", diff,
+                   abs(diff) <= a.one_dof_unloading))
+if a.seed_law_off is not None:
+    diff = float(s["epsilon"]) - float(s["one_dof_epsilon"])
+    checks.append(("epsilon - 1-DOF seed law (must exceed)", diff,
+                   abs(diff) >= a.seed_law_off))
 if a.factorizations is not None:
     checks.append(("factorizations", int(s["factorizations"]),
                    int(s["factorizations"]) == a.factorizations))

@@ -1,6 +1,7 @@
 #include "reference/hertz_impact.h"
 #include "reference/log_contact_law.h"
 #include "reference/one_dof_impact.h"
+#include "reference/sphere_finite_size.h"
 #include "reference/two_body_contact.h"
 #include "reference/wall_contact_theory.h"
 
@@ -29,7 +30,8 @@ namespace
   }
 
   /// The sphere's D0 for the centre of mass at nu = 0.3 (docs/sphere.md).
-  constexpr double sphere_constant = -0.532;
+  const double sphere_constant =
+    sphere_finite_size_constants(0.3).centre_of_mass;
 
   /// The wall law of one body, to compare with.
   ForceLaw
@@ -62,7 +64,9 @@ namespace
   {
     std::vector<std::pair<ContactBody, ContactBody>> pairs;
     const double c1 = sphere ? sphere_constant : disk_constant();
-    const double c2 = sphere ? -0.437 : centre_of_mass_constant(0.25);
+    const double c2 = sphere ?
+                        sphere_finite_size_constants(0.45).centre_of_mass :
+                        centre_of_mass_constant(0.25);
     for (const double radius_ratio : {1., 0.5, 0.25})
       for (const double modulus_ratio : {1., 3., 1. / 3.})
         pairs.push_back(

@@ -392,3 +392,53 @@ TEST_CASE("Finite sphere's wall law: the inverse of delta_H(P) + D P/(E* R)",
   const auto soft = DiskImpact::Reference::sphere_force_law(E_star, R, -0.45);
   CHECK_THROWS_AS(soft.force(2. * R), std::domain_error);
 }
+
+TEST_CASE("Kelvin-Voigt unloading law: the force, a linear law, second order",
+          "[reference][spheres]")
+{
+  const double rho = 1.3, tau = 0.3;
+  const auto   law = hertz_force_law(rho);
+  const auto   f_d = kelvin_voigt_unloading_force(law, tau);
+  const double xi  = 0.01;
+  // Growing contact: seed 003's tau xi' F'(xi); shrinking: the elastic force
+  // of the approach xi + tau xi', none once that is <= 0.
+  CHECK(f_d(xi, 2e-3) == Approx(tau * 2e-3 * law.derivative(xi)));
+  CHECK(law.force(xi) + f_d(xi, -2e-3) ==
+        Approx(law.force(xi - tau * 2e-3)).epsilon(1e-14));
+  CHECK(law.force(xi) + f_d(xi, -0.1) == Approx(0.).margin(1e-18));
+
+  // A linear law F = k xi: F(xi + tau xi') = F + tau xi' F' exactly, so both
+  // laws give the same collision.
+  const ForceLaw linear{[](const double x) { return x > 0. ? 2. * x : 0.; },
+                        [](const double x) { return x > 0. ? 2. : 0.; }};
+  const double   e_linear_seed =
+    collide(1., 1., linear, 0.2, EndCriterion::force).epsilon;
+  const double e_linear_unloading =
+    collide(1.,
+            1.,
+            linear,
+            kelvin_voigt_unloading_force(linear, 0.2),
+            EndCriterion::force)
+      .epsilon;
+  CHECK(e_linear_unloading == Approx(e_linear_seed).epsilon(1e-10));
+
+  // Hertz's law: (1 + x)^{3/2} > 1 + 3x/2 for the unloading's x = tau xi'/xi,
+  // so less is dissipated, by a term of second order in tau.
+  auto difference = [&](const double t) {
+    const double seed =
+      collide(1., 1., law, t, EndCriterion::force, 1e-12).epsilon;
+    const double unloading = collide(1.,
+                                     1.,
+                                     law,
+                                     kelvin_voigt_unloading_force(law, t),
+                                     EndCriterion::force,
+                                     1e-12)
+                               .epsilon;
+    CHECK(unloading > seed);
+    return unloading - seed;
+  };
+  const double ratio = difference(0.02) / difference(0.01);
+  CAPTURE(ratio);
+  CHECK(ratio > 3.6);
+  CHECK(ratio < 4.4);
+}
