@@ -89,7 +89,8 @@ namespace DiskImpact
                       "D of delta = delta_Hertz + D P / (E* R), 'exact' for "
                       "Hertz's law (D = 0), 'finite size' for the derived "
                       "D = D0 + D1 ln(a/R) at the contact radius of Hertz's "
-                      "largest approach (one sphere on the wall), or a "
+                      "largest approach (on the wall, or in a pair the "
+                      "pair's, with each sphere's own nu and R), or a "
                       "number.");
     prm.declare_entry("Output interval",
                       "20",
@@ -124,7 +125,7 @@ namespace DiskImpact
                       "",
                       Patterns::List(Patterns::Double(0.), 0),
                       "Task 'sweep': Kelvin-Voigt relaxation times (as "
-                      "'Relaxation time' of subsection Material) [R/c]; "
+                      "'Relaxation time' of subsection Material) [time]; "
                       "empty: the material's.");
     prm.declare_entry("Partner radii",
                       "",
