@@ -267,27 +267,30 @@ namespace DiskImpact
   double
   Impact::hertz_contact_radius(const Parameters &parameters) const
   {
-    // Hertz's impact of the sphere on the wall, or of the pair with the
-    // reduced mass, E_eff = 1 / (1/E1* + 1/E2*) and R_eff = R1 R2 / (R1 + R2);
-    // a^2 = R_eff delta_max.
+    // Hertz's impact of the sphere on the wall, or of the pair as its
+    // equivalent body with the reduced mass; a^2 = R_eff delta_max.
     const auto  &material = parameters.material;
     const double v0       = impact_velocity * material.velocity_unit();
-    double       R        = parameters.geometry.radius();
     double       mass     = material.density() * parameters.geometry.volume();
-    double       modulus  = material.in_plane_young_modulus();
-    const auto  &partner  = parameters.partner;
+    Reference::ContactBody body{parameters.geometry.radius(),
+                                material.in_plane_young_modulus(),
+                                0.};
+    const auto            &partner = parameters.partner;
     if (partner.is_body())
       {
-        const double R2 = partner.radius();
-        const double m2 = partner.material().density() *
-                          parameters.geometry.with_radius(R2).volume();
-        R       = R * R2 / (R + R2);
-        mass    = mass * m2 / (mass + m2);
-        modulus = 1. / (1. / modulus +
-                        1. / partner.material().in_plane_young_modulus());
+        const double m2 =
+          partner.material().density() *
+          parameters.geometry.with_radius(partner.radius()).volume();
+        mass = mass * m2 / (mass + m2);
+        body = Reference::equivalent_body(
+          true,
+          body,
+          {partner.radius(), partner.material().in_plane_young_modulus(), 0.});
       }
     return std::sqrt(
-      R * Reference::hertz_sphere_impact(mass, modulus, R, v0).max_overlap);
+      body.radius *
+      Reference::hertz_sphere_impact(mass, body.modulus, body.radius, v0)
+        .max_overlap);
   }
 
   double
