@@ -78,6 +78,14 @@ namespace DiskImpact
                       Patterns::Double(0.01, 1),
                       "Growth of the element size with distance from the "
                       "contact zone [-].");
+    prm.declare_entry("Graded half-width",
+                      "0",
+                      Patterns::Double(0., 1.),
+                      "Half-width of the contact zone the mesh is graded for "
+                      "[R]; 0: Hertz's half-width at the 1-DOF model's "
+                      "largest force at this speed. A fixed value keeps one "
+                      "mesh for every speed of a sweep (epsilon(v) on one "
+                      "discretization).");
     prm.declare_entry("Contact law constant",
                       "exact",
                       Patterns::Anything(),
@@ -164,6 +172,7 @@ namespace DiskImpact
     impact_velocity         = prm.get_double("Velocity");
     elements_across_contact = prm.get_integer("Elements across contact");
     grading                 = prm.get_double("Grading");
+    graded_half_width       = prm.get_double("Graded half-width");
     contact_law_constant    = prm.get("Contact law constant");
     margin                  = prm.get_double("Margin");
     output_interval         = prm.get_integer("Output interval");
@@ -561,6 +570,14 @@ namespace DiskImpact
   }
 
   double
+  Impact::graded_width(const Parameters &parameters) const
+  {
+    if (graded_half_width > 0.)
+      return graded_half_width * parameters.geometry.radius();
+    return largest_half_width(parameters);
+  }
+
+  double
   Impact::largest_half_width(const Parameters &parameters) const
   {
     return Reference::wall_contact_theory(parameters.geometry.is_axisymmetric())
@@ -582,7 +599,7 @@ namespace DiskImpact
       geometry.create_triangulation(triangulation, max_cells);
     refine_toward_contact(triangulation,
                           geometry.contact_point(),
-                          largest_half_width(parameters),
+                          graded_width(parameters),
                           elements_across_contact,
                           grading,
                           max_cells);

@@ -127,6 +127,10 @@ namespace DiskImpact
     /// contact zone the mesh is graded for.
     double
     largest_half_width(const Parameters &parameters) const;
+    /// The half-width the mesh is graded for [length]: 'Graded half-width'
+    /// if set, else largest_half_width().
+    double
+    graded_width(const Parameters &parameters) const;
     /// The impact's mesh: the geometry's, graded toward the contact point;
     /// throws an InputError if it would exceed about @p max_cells cells.
     void
@@ -208,6 +212,7 @@ namespace DiskImpact
     bool                resume_sweep            = true;
     unsigned int        elements_across_contact = 12;
     double              grading                 = 0.3;
+    double              graded_half_width       = 0.;
     std::string         contact_law_constant    = "exact";
     double              margin                  = 0.2;
     unsigned int        output_interval         = 20;

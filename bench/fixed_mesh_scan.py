@@ -1,0 +1,152 @@
+#!/usr/bin/python3
+"""epsilon(v) on one mesh: the standard impact (plane stress nu = 0.33, half
+disk, Q2, 1 global refinement; the penalty law with factor 100 or as given,
+the exponential law with stiffness 100, or the exact constraint) at many
+nearby speeds, all on the mesh graded for one fixed half-width ('Graded
+half-width'), so that only the speed changes. Mesh level L is that of the convergence study
+(params/impact_convergence.prm): 6 * 2^L elements across the contact,
+grading 0.6 / 2^L, time step fraction 0.01 / 2^L unless --fraction is given.
+
+A smooth polynomial in v is fitted to epsilon(v); what it leaves is the
+part of the discretization error that is not smooth in the data. Prints
+the residual's rms and largest value, the point-to-point scatter (the rms
+of the third differences over sqrt(20), the standard deviation of
+independent noise) and the largest jump between neighbouring speeds beyond
+the fitted trend (docs/impact-convergence.md, "epsilon on one mesh").
+
+usage: bench/fixed_mesh_scan.py --speeds 0.06 0.14 0.001 [--level 0]
+           [--law penalty] [--penalty-factor 100] [--fraction F] [--scheme S]
+           [--fit-degree 6] [--graded-half-width 0.45] [--print] [--jobs 2]
+           [-o scan.csv]
+"""
+import argparse
+import concurrent.futures
+import csv
+import os
+import subprocess
+import sys
+import tempfile
+
+import numpy as np
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+CASE = """set Task = impact
+set Output directory = {out}
+subsection Geometry
+  set Domain             = half disk
+  set Global refinements = 1
+end
+subsection Material
+  set Plane model   = plane stress
+  set Poisson ratio = 0.33
+end
+subsection Finite element
+  set Degree = 2
+end
+subsection Contact
+  set Law                 = {law}
+  set Penalty factor      = {kappa}
+  set Potential stiffness = 100
+end
+subsection Impact
+  set Velocity                = {v}
+  set Elements across contact = {across}
+  set Grading                 = {grading}
+  set Graded half-width       = {width}
+  set Output interval         = 0
+  set Mode energies           = 0
+end
+subsection Time stepping
+  set Scheme             = {scheme}
+  set Time step fraction = {fraction}
+end
+"""
+
+
+def run(v, args, work):
+    out = os.path.join(work, f"{v:.9f}")
+    os.makedirs(out)
+    prm = os.path.join(out, "case.prm")
+    with open(prm, "w") as f:
+        f.write(CASE.format(out=out, v=f"{v:.12g}", law=args.law,
+                            fraction=args.fraction, width=args.graded_half_width,
+                            across=6 << args.level,
+                            grading=0.6 / (1 << args.level),
+                            scheme=args.scheme, kappa=args.penalty_factor))
+    subprocess.run([args.diskimpact, prm], check=True,
+                   stdout=subprocess.DEVNULL)
+    with open(os.path.join(out, "summary.csv")) as f:
+        row = next(csv.DictReader(f))
+    return v, float(row["epsilon"]), int(row["n_dofs"])
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--speeds", nargs=3, type=float, required=True,
+                        metavar=("FIRST", "LAST", "STEP"))
+    parser.add_argument("--law", default="penalty",
+                        choices=["penalty", "constraint", "exponential"])
+    parser.add_argument("--level", type=int, default=0,
+                        help="the convergence study's mesh level (default 0)")
+    parser.add_argument("--fraction", type=float,
+                        help="'Time step fraction' (default 0.01 / 2^level)")
+    parser.add_argument("--graded-half-width", type=float, default=0.45,
+                        help="the mesh's 'Graded half-width' [R]")
+    parser.add_argument("--penalty-factor", type=float, default=100.,
+                        help="the penalty law's 'Penalty factor' (default 100)")
+    parser.add_argument("--scheme", default="energy conserving",
+                        choices=["energy conserving", "newmark",
+                                 "generalized alpha"])
+    parser.add_argument("--fit-degree", type=int, default=6,
+                        help="degree of the trend fitted in v (default 6)")
+    parser.add_argument("--print", action="store_true",
+                        help="print every speed's epsilon")
+    parser.add_argument("--jobs", type=int, default=2)
+    parser.add_argument("--diskimpact",
+                        default=os.path.join(ROOT, "build", "diskimpact"))
+    parser.add_argument("-o", "--output", help="CSV: v, epsilon, residual")
+    args = parser.parse_args()
+    if args.fraction is None:
+        args.fraction = 0.01 / (1 << args.level)
+
+    first, last, step = args.speeds
+    speeds = list(np.round(np.arange(first, last + 0.5 * step, step), 12))
+    if len(speeds) < args.fit_degree + 2:
+        sys.exit(f"fixed_mesh_scan: {len(speeds)} speeds are too few for a "
+                 f"degree-{args.fit_degree} fit")
+    with tempfile.TemporaryDirectory() as work:
+        with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
+            rows = sorted(pool.map(lambda v: run(v, args, work), speeds))
+    v = np.array([r[0] for r in rows])
+    eps = np.array([r[1] for r in rows])
+    dofs = {r[2] for r in rows}
+    if len(dofs) != 1:
+        sys.exit("fixed_mesh_scan: the mesh changed with the speed "
+                 f"({sorted(dofs)} DoFs)")
+    trend = np.polynomial.Polynomial.fit(v, eps, args.fit_degree)(v)
+    residual = eps - trend
+    jumps = np.diff(residual)
+    print(f"{args.law}, {args.scheme}, mesh level {args.level}, time step fraction {args.fraction:g}, "
+          f"{dofs.pop()} DoFs, {len(v)} speeds {v[0]:.9g} ... {v[-1]:.9g}")
+    print(f"  residual from a degree-{args.fit_degree} fit: rms {residual.std():.2e}, "
+          f"largest {np.abs(residual).max():.2e}")
+    if len(v) >= 4:
+        scatter = np.diff(eps, 3).std() / np.sqrt(20.)
+        print(f"  point-to-point scatter: {scatter:.2e}")
+    k = int(np.argmax(np.abs(jumps)))
+    print(f"  largest jump between neighbours beyond the trend: {jumps[k]:+.2e} "
+          f"(v = {v[k]:.9g} to {v[k + 1]:.9g}: epsilon {eps[k]:.8f}, {eps[k + 1]:.8f})")
+    if args.print:
+        for row in zip(v, eps, residual):
+            print(f"  v = {row[0]:.9g}: epsilon = {row[1]:.8f}, residual {row[2]:+.2e}")
+    if args.output:
+        with open(args.output, "w", newline="") as f:
+            writer = csv.writer(f)
+            writer.writerow(["velocity", "epsilon", "residual"])
+            for row in zip(v, eps, residual):
+                writer.writerow([f"{row[0]:.9g}", f"{row[1]:.12g}", f"{row[2]:.6e}"])
+
+
+if __name__ == "__main__":
+    main()
