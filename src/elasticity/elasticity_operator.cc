@@ -85,7 +85,8 @@ namespace DiskImpact
         ComponentMask(std::vector<bool>{false, true}));
     pin_axial_displacement(axial_pins);
     constraints.close();
-    massless_dofs = IndexSet(dof_handler.n_dofs());
+    massless_dofs      = IndexSet(dof_handler.n_dofs());
+    redistributed_dofs = IndexSet(dof_handler.n_dofs());
 
     // K couples the two displacement components, M does not: M gets its
     // own pattern, half as many entries (its products dominate the
@@ -130,6 +131,14 @@ namespace DiskImpact
                   massless_dofs.add_index(dof);
             }
     massless_dofs.compress();
+    // A hanging node's mass, left in place, would reach the massless DoFs
+    // it depends on through its constraint: it moves too.
+    redistributed_dofs = massless_dofs;
+    for (const auto &line : constraints.get_lines())
+      for (const auto &entry : line.entries)
+        if (massless_dofs.is_element(entry.first))
+          redistributed_dofs.add_index(line.index);
+    redistributed_dofs.compress();
   }
 
   unsigned int
@@ -198,7 +207,7 @@ namespace DiskImpact
     for (unsigned int i = 0; i < n; ++i)
       {
         source[i] = i;
-        if (!massless_dofs.is_element(dof_indices[i]))
+        if (!redistributed_dofs.is_element(dof_indices[i]))
           continue;
         any_massless          = true;
         const auto  component = fe->system_to_component_index(i).first;
@@ -206,7 +215,7 @@ namespace DiskImpact
         double      best      = std::numeric_limits<double>::max();
         for (unsigned int j = 0; j < n; ++j)
           if (fe->system_to_component_index(j).first == component &&
-              !massless_dofs.is_element(dof_indices[j]) &&
+              !redistributed_dofs.is_element(dof_indices[j]) &&
               point.distance(fe->unit_support_point(j)) < best)
             {
               best      = point.distance(fe->unit_support_point(j));

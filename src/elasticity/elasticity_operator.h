@@ -161,6 +161,10 @@ namespace DiskImpact
     std::unique_ptr<dealii::FESystem<2>> fe;
     /// DoFs without inertia (mass redistribution), size n_dofs.
     dealii::IndexSet massless_dofs;
+    /// The DoFs whose mass moves in the cell mass form: massless_dofs and
+    /// the hanging nodes' DoFs on the same faces (whose mass the constraints
+    /// would otherwise hand on to the massless DoFs they depend on).
+    dealii::IndexSet redistributed_dofs;
 
     /// The cell mass matrix of Pi u (set_massless_edge_zone()).
     void
