@@ -65,9 +65,12 @@ namespace DiskImpact
      * 27, 2008): the DoFs on the curved-edge faces within @p radius of
      * @p point carry no inertia. In each cell the mass form is that of Pi u,
      * where Pi gives each such DoF the value of the nearest cell DoF of the
-     * same component off that part of the edge. Pi keeps constants, so the
-     * total mass and the momentum of a uniform motion are those of the
-     * consistent mass matrix. Call between setup() and assemble().
+     * same component off that part of the edge. The hanging nodes whose
+     * constraints involve those DoFs are moved the same way (their mass
+     * would otherwise reach them through the constraints). Pi keeps
+     * constants, so the total mass and the momentum of a uniform motion
+     * are those of the consistent mass matrix. Call between setup() and
+     * assemble().
      */
     void
     set_massless_edge_zone(const dealii::Point<2> &point, double radius);
