@@ -203,13 +203,13 @@ namespace DiskImpact
     // source[i]: the cell DoF whose value DoF i takes in the mass form.
     const unsigned int        n = dof_indices.size();
     std::vector<unsigned int> source(n);
-    bool                      any_massless = false;
+    bool                      any_moved = false;
     for (unsigned int i = 0; i < n; ++i)
       {
         source[i] = i;
         if (!redistributed_dofs.is_element(dof_indices[i]))
           continue;
-        any_massless          = true;
+        any_moved             = true;
         const auto  component = fe->system_to_component_index(i).first;
         const auto &point     = fe->unit_support_point(i);
         double      best      = std::numeric_limits<double>::max();
@@ -223,7 +223,7 @@ namespace DiskImpact
             }
         Assert(source[i] != i, ExcInternalError());
       }
-    if (!any_massless)
+    if (!any_moved)
       return;
     // (Pi^T M Pi)(k, l) = sum over a, b with source[a] = k, source[b] = l.
     FullMatrix<double> redistributed(n, n);

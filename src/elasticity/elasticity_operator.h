@@ -165,8 +165,8 @@ namespace DiskImpact
     /// DoFs without inertia (mass redistribution), size n_dofs.
     dealii::IndexSet massless_dofs;
     /// The DoFs whose mass moves in the cell mass form: massless_dofs and
-    /// the hanging nodes' DoFs on the same faces (whose mass the constraints
-    /// would otherwise hand on to the massless DoFs they depend on).
+    /// every constrained DoF whose constraint involves one of them (a
+    /// hanging node's mass would otherwise reach them through it).
     dealii::IndexSet redistributed_dofs;
 
     /// The cell mass matrix of Pi u (set_massless_edge_zone()).
