@@ -10,9 +10,14 @@ the shipped bar. Each study on 2 MPI ranks; prints one row per point and a
 Markdown table at the end.
 
 The model "quick" (params/impact_convergence_quick.prm, cubic, two mesh
-levels: the two-second estimate) is run only when asked for.
+levels: the two-second estimate) is run only when asked for, and so are the
+sweeps' studies, "sweep-stress" and "sweep-strain" (params/sweep.prm and
+params/sweep_plane_strain.prm as one study at each speed: mesh levels added
+while the bar exceeds their 'Target error'); for those, "one level finer" is
+one beyond the levels the study chose.
 
-usage: bench/error_bar_coverage.py [--speeds 0.005,0.1] [--models stress,strain,quick]
+usage: bench/error_bar_coverage.py [--speeds 0.005,0.1]
+                                   [--models stress,strain,quick,sweep-stress,sweep-strain]
                                    [--diskimpact build/diskimpact]
        (build first; about 12 minutes for all 14 points on 2 cores)
 """
@@ -30,16 +35,23 @@ MODELS = {
     "strain": ("plane strain nu2 = 0.9", "params/impact_convergence_plane_strain.prm"),
     "quick": ("plane stress nu = 0.33, two cubic levels",
               "params/impact_convergence_quick.prm"),
+    "sweep-stress": ("plane stress nu = 0.33, sweep, cubic, target 1e-3", "params/sweep.prm"),
+    "sweep-strain": ("plane strain nu2 = 0.9, sweep, quartic, target 1e-3",
+                     "params/sweep_plane_strain.prm"),
 }
 
 
-def study(diskimpact, template, velocity, extra_levels, directory):
-    """Run the study of @template at @velocity with its mesh levels plus
-    @extra_levels; return (levels, wall seconds)."""
+def study(diskimpact, template, velocity, directory, levels=None):
+    """Run the study of @template at @velocity (a sweep's file as one study)
+    with its own mesh levels, or with exactly @levels and no target error;
+    return (mesh levels run, wall seconds)."""
     text = open(os.path.join(ROOT, template)).read()
-    levels = int(re.search(r"set Mesh levels\s*=\s*(\d+)", text).group(1))
-    text = re.sub(r"set Mesh levels\s*=\s*\d+",
-                  f"set Mesh levels = {levels + extra_levels}", text)
+    text = re.sub(r"set Task\s*=\s*sweep", "set Task = impact convergence", text)
+    text = re.sub(r"set Velocities\s*=.*", f"set Velocity = {velocity}", text)
+    text = re.sub(r"\n\s*set Error estimate\s*=.*", "", text)
+    if levels is not None:
+        text = re.sub(r"set Mesh levels\s*=\s*\d+", f"set Mesh levels = {levels}", text)
+        text = re.sub(r"set Target error\s*=.*", "set Target error = 0", text)
     text = re.sub(r"set Velocity\s*=\s*[0-9.eE+-]+", f"set Velocity = {velocity}", text)
     text = re.sub(r"set Output directory\s*=.*", f"set Output directory = {directory}", text)
     prm = os.path.join(directory + ".prm")
@@ -48,7 +60,9 @@ def study(diskimpact, template, velocity, extra_levels, directory):
     start = time.time()
     subprocess.run(["mpirun", "-np", "2", diskimpact, prm],
                    check=True, stdout=subprocess.DEVNULL, env=env)
-    return levels + extra_levels, time.time() - start
+    seconds = time.time() - start
+    runs = csv.DictReader(open(os.path.join(directory, "impact_convergence.csv")))
+    return sum(r["factor"] in ("base", "mesh") for r in runs), seconds
 
 
 def main():
@@ -64,18 +78,20 @@ def main():
             for v in args.speeds.split(","):
                 shipped = os.path.join(work, f"{model}_{v}")
                 finer = shipped + "_finer"
-                _, seconds = study(args.diskimpact, template, v, 0, shipped)
+                shipped_levels, seconds = study(args.diskimpact, template, v, shipped)
                 total = next(r for r in csv.DictReader(open(os.path.join(shipped, "epsilon_estimate.csv")))
                              if r["factor"] == "total")
                 epsilon, bar = float(total["limit"]), float(total["error"])
-                levels, finer_seconds = study(args.diskimpact, template, v, 1, finer)
+                levels, finer_seconds = study(args.diskimpact, template, v, finer,
+                                              shipped_levels + 1)
                 runs = list(csv.DictReader(open(os.path.join(finer, "impact_convergence.csv"))))
                 finest = next(float(r["epsilon"]) for r in runs
                               if r["factor"] == "mesh" and int(r["level"]) == levels - 1)
                 row = (name, v, epsilon, bar, seconds, finest, abs(finest - epsilon),
                        abs(finest - epsilon) <= bar, finer_seconds)
                 rows.append(row)
-                print(f"{name}, v = {v} c: {epsilon:.8f} +- {bar:.2e} ({seconds:.1f} s); "
+                print(f"{name}, v = {v} c: {epsilon:.8f} +- {bar:.2e} "
+                      f"({shipped_levels} levels, {seconds:.1f} s); "
                       f"level {levels - 1}: {finest:.8f}, distance {row[6]:.2e}, "
                       f"{'inside' if row[7] else 'OUTSIDE'} ({finer_seconds:.1f} s)", flush=True)
     print("\n| model | v/c | ε ± bar (shipped) | wall | one level finer | distance | inside |")

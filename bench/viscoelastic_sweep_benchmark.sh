@@ -1,7 +1,8 @@
 #!/bin/bash
 # A 5-speed Kelvin-Voigt sweep with error bars (tau = 0.05 R/c, alpha =
-# 0.05) on 2 MPI ranks, with the settings of params/sweep.prm (3 mesh levels
-# per point), beside the elastic 7-speed sweep of params/sweep.prm. Prints
+# 0.05) on 2 MPI ranks, with the settings of params/sweep.prm (its mesh
+# levels and target error), beside the elastic 7-speed sweep of
+# params/sweep.prm. Prints
 # the wall times and the rows.
 #
 # usage: bench/viscoelastic_sweep_benchmark.sh    (build first)

@@ -1,5 +1,6 @@
 #include "tasks/impact_convergence_study.h"
 
+#include "base/input_error.h"
 #include "base/parameters.h"
 #include "base/run_error.h"
 #include "output/csv_table.h"
@@ -22,14 +23,18 @@ namespace DiskImpact
 
   namespace
   {
-    /// Refinement ratio and expected order of each factor.
+    /// Refinement ratio and expected order of a factor.
     struct FactorSequence
     {
-      std::string  name;
-      unsigned int levels;
-      double       ratio;
-      double       expected_order;
+      std::string name;
+      double      ratio;
+      double      expected_order;
     };
+
+    /// The study's sequences: mesh (everything together), then the two
+    /// diagnostics.
+    const std::array<FactorSequence, 3> factor_sequences{
+      {{"mesh", 2., 1.}, {"time step", 2., 2.}, {"penalty", 4., 1.}}};
 
     std::string
     describe(const StudyRun &run)
@@ -71,6 +76,18 @@ namespace DiskImpact
                       "1, ... times [-]: a diagnostic, reported but not added "
                       "to the error bar (the penalty k = kappa E2 / h already "
                       "stiffens in the mesh sequence).");
+    prm.declare_entry("Target error",
+                      "0",
+                      Patterns::Double(0.),
+                      "Add mesh levels beyond 'Mesh levels', one at a time, "
+                      "while epsilon's error bar exceeds this, up to "
+                      "'Largest mesh levels' [-]; 0: exactly 'Mesh levels'. "
+                      "A sweep adds them per point.");
+    prm.declare_entry("Largest mesh levels",
+                      "4",
+                      Patterns::Integer(1, 6),
+                      "With a 'Target error': the most mesh levels a study "
+                      "may run [-]; at least 'Mesh levels'.");
     prm.leave_subsection();
   }
 
@@ -78,10 +95,18 @@ namespace DiskImpact
   ImpactConvergenceStudy::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Impact convergence");
-    mesh_levels      = prm.get_integer("Mesh levels");
-    time_step_levels = prm.get_integer("Time step levels");
-    penalty_levels   = prm.get_integer("Penalty levels");
+    mesh_levels         = prm.get_integer("Mesh levels");
+    time_step_levels    = prm.get_integer("Time step levels");
+    penalty_levels      = prm.get_integer("Penalty levels");
+    target_error        = prm.get_double("Target error");
+    largest_mesh_levels = prm.get_integer("Largest mesh levels");
     prm.leave_subsection();
+    require(target_error == 0. ||
+              (mesh_levels >= 2 && largest_mesh_levels >= mesh_levels),
+            "Impact convergence: a 'Target error' needs 'Mesh levels' >= 2 "
+            "and 'Largest mesh levels' >= 'Mesh levels' (here " +
+              std::to_string(mesh_levels) + " and " +
+              std::to_string(largest_mesh_levels) + ")");
   }
 
   Parameters
@@ -111,7 +136,9 @@ namespace DiskImpact
   Parameters
   ImpactConvergenceStudy::finest(const Parameters &parameters) const
   {
-    return refined(parameters, "mesh", mesh_levels - 1);
+    return refined(parameters,
+                   "mesh",
+                   (target_error > 0. ? largest_mesh_levels : mesh_levels) - 1);
   }
 
   std::vector<StudyRun>
@@ -213,39 +240,22 @@ namespace DiskImpact
     return done;
   }
 
-  ConvergedEpsilon
-  ImpactConvergenceStudy::run(const Parameters &parameters,
-                              MPI_Comm          communicator,
-                              std::ostream     *log) const
+  void
+  ImpactConvergenceStudy::estimate(ConvergedEpsilon &result)
   {
-    const std::vector<FactorSequence> sequences{
-      {"mesh", mesh_levels, 2., 1.},
-      {"time step", time_step_levels, 2., 2.},
-      {"penalty", penalty_levels, 4., 1.}};
-    std::vector<StudyRun>   runs{{"base", 0, {}, 0.}};
-    std::vector<Parameters> points{parameters};
-    for (const auto &sequence : sequences)
-      for (unsigned int level = 1; level < sequence.levels; ++level)
-        {
-          runs.push_back({sequence.name, level, {}, 0.});
-          points.push_back(refined(parameters, sequence.name, level));
-        }
-    if (log != nullptr)
-      *log << "    factor  l    DoFs   dt [R/c]      epsilon   energy"
-              " err.  time\n";
-
-    ConvergedEpsilon result;
-    result.runs    = run_all(runs, points, communicator, log);
     result.base    = result.runs.front().summary;
     result.epsilon = result.base.epsilon;
-    for (const auto &sequence : sequences)
+    result.error   = 0.;
+    result.factors.clear();
+    result.estimates.clear();
+    for (const auto &sequence : factor_sequences)
       {
-        if (sequence.levels < 2)
-          continue;
         std::vector<double> values{result.base.epsilon};
         for (const auto &run : result.runs)
           if (run.factor == sequence.name)
             values.push_back(run.summary.epsilon);
+        if (values.size() < 2)
+          continue;
         const auto estimate =
           richardson_estimate(values, sequence.ratio, sequence.expected_order);
         result.factors.push_back(sequence.name);
@@ -256,6 +266,45 @@ namespace DiskImpact
           continue;
         result.epsilon += estimate.extrapolated - result.base.epsilon;
         result.error += estimate.error;
+      }
+  }
+
+  ConvergedEpsilon
+  ImpactConvergenceStudy::run(const Parameters &parameters,
+                              MPI_Comm          communicator,
+                              std::ostream     *log) const
+  {
+    std::vector<StudyRun>             runs{{"base", 0, {}, 0.}};
+    std::vector<Parameters>           points{parameters};
+    const std::array<unsigned int, 3> levels{
+      {mesh_levels, time_step_levels, penalty_levels}};
+    for (unsigned int i = 0; i < levels.size(); ++i)
+      for (unsigned int level = 1; level < levels[i]; ++level)
+        {
+          runs.push_back({factor_sequences[i].name, level, {}, 0.});
+          points.push_back(
+            refined(parameters, factor_sequences[i].name, level));
+        }
+    if (log != nullptr)
+      *log << "    factor  l    DoFs   dt [R/c]      epsilon   energy"
+              " err.  time\n";
+
+    ConvergedEpsilon result;
+    result.runs = run_all(runs, points, communicator, log);
+    estimate(result);
+    // One more mesh level at a time while the bar exceeds the target (every
+    // rank sees the same bar, so all take the same decision).
+    for (unsigned int level = mesh_levels;
+         target_error > 0. && result.error > target_error &&
+         level < largest_mesh_levels;
+         ++level)
+      {
+        const auto finer = run_all({{"mesh", level, {}, 0.}},
+                                   {refined(parameters, "mesh", level)},
+                                   communicator,
+                                   log);
+        result.runs.push_back(finer.front());
+        estimate(result);
       }
     return result;
   }
@@ -382,6 +431,11 @@ namespace DiskImpact
     out << std::fixed << std::setprecision(8)
         << "  epsilon = " << result.epsilon << " +- " << std::scientific
         << std::setprecision(2) << result.error << '\n';
+    const double target = parameters.impact_convergence.target();
+    if (target > 0. && result.error > target)
+      out << "  (the target error " << target << " is not reached with "
+          << parameters.impact_convergence.largest_levels()
+          << " mesh levels)\n";
     pcout << out.str();
   }
 } // namespace DiskImpact

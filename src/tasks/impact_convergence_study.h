@@ -49,7 +49,9 @@ namespace DiskImpact
    *   penalty:   penalty factor * 4^l, ratio 4 in 1/k, expected order 1.
    * Each sequence is extrapolated (richardson_estimate()). The mesh
    * sequence refines everything together: epsilon and its error bar are
-   * its limit and GCI; the other two are diagnostics.
+   * its limit and GCI; the other two are diagnostics. With a target error,
+   * mesh levels are added one at a time while the mesh sequence's error
+   * bar exceeds it, up to a largest number of levels.
    */
   class ImpactConvergenceStudy
   {
@@ -67,10 +69,23 @@ namespace DiskImpact
         MPI_Comm          communicator,
         std::ostream     *log) const;
 
-    /// @p parameters refined as the study's finest mesh level: its largest
+    /// @p parameters refined as the study's finest mesh level (with a
+    /// target error, the largest level it may add): its largest
     /// discretization.
     Parameters
     finest(const Parameters &parameters) const;
+
+    /// 'Target error' (0: none) and 'Largest mesh levels'.
+    double
+    target() const
+    {
+      return target_error;
+    }
+    unsigned int
+    largest_levels() const
+    {
+      return largest_mesh_levels;
+    }
 
     /// The runs as a table (factor, level, epsilon, ...).
     static CsvTable
@@ -87,15 +102,21 @@ namespace DiskImpact
             const std::vector<Parameters> &points,
             MPI_Comm                       communicator,
             std::ostream                  *log);
+    /// Each sequence of @p result's runs extrapolated; epsilon and its
+    /// error bar from the mesh sequence.
+    static void
+    estimate(ConvergedEpsilon &result);
     /// @p parameters with @p factor refined @p level times.
     static Parameters
     refined(const Parameters  &parameters,
             const std::string &factor,
             unsigned int       level);
 
-    unsigned int mesh_levels      = 3;
-    unsigned int time_step_levels = 3;
-    unsigned int penalty_levels   = 3;
+    unsigned int mesh_levels         = 3;
+    unsigned int time_step_levels    = 3;
+    unsigned int penalty_levels      = 3;
+    double       target_error        = 0.; ///< 0: exactly mesh_levels
+    unsigned int largest_mesh_levels = 3;
   };
 
   /// Task 'impact convergence': the study at 'Velocity', printed and
