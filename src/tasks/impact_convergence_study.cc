@@ -256,16 +256,16 @@ namespace DiskImpact
             values.push_back(run.summary.epsilon);
         if (values.size() < 2)
           continue;
-        const auto estimate =
+        const auto limit =
           richardson_estimate(values, sequence.ratio, sequence.expected_order);
         result.factors.push_back(sequence.name);
-        result.estimates.push_back(estimate);
+        result.estimates.push_back(limit);
         // The mesh sequence halves dt and stiffens the penalty as well: the
         // other sequences are diagnostics, their errors part of the mesh's.
         if (sequence.name != "mesh")
           continue;
-        result.epsilon += estimate.extrapolated - result.base.epsilon;
-        result.error += estimate.error;
+        result.epsilon += limit.extrapolated - result.base.epsilon;
+        result.error += limit.error;
       }
   }
 
