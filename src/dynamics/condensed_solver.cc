@@ -12,9 +12,32 @@ namespace DiskImpact
 {
   using namespace dealii;
 
+  namespace
+  {
+    /// Whether PETSc's options choose the solver or the ordering: then they
+    /// apply to the scalar matrix, as they say.
+    bool
+    factorization_set_by_options()
+    {
+      PetscBool solver_set, ordering_set;
+      check_petsc(PetscOptionsHasName(nullptr,
+                                      nullptr,
+                                      "-pc_factor_mat_solver_type",
+                                      &solver_set),
+                  "PetscOptionsHasName");
+      check_petsc(PetscOptionsHasName(nullptr,
+                                      nullptr,
+                                      "-pc_factor_mat_ordering_type",
+                                      &ordering_set),
+                  "PetscOptionsHasName");
+      return solver_set || ordering_set;
+    }
+  } // namespace
+
   CondensedSolver::CondensedSolver(const PETScWrappers::MPI::SparseMatrix &A,
-                                   const IndexSet &locally_owned,
-                                   MPI_Comm        communicator)
+                                   const IndexSet    &locally_owned,
+                                   MPI_Comm           communicator,
+                                   const unsigned int block_size)
       : owned(locally_owned)
       , communicator(communicator)
   {
@@ -25,16 +48,38 @@ namespace DiskImpact
     check_petsc(PCSetType(pc, PCCHOLESKY), "PCSetType");
     if (Utilities::MPI::n_mpi_processes(communicator) == 1)
       {
-        // On one rank PETSc's own Cholesky of a sequential copy, with a
-        // nested-dissection ordering, solves 2-3 times faster than MUMPS
-        // (docs/impact-convergence.md, "One rank's solver").
+        // On one rank PETSc's own Cholesky of a sequential copy solves 2-3
+        // times faster than MUMPS (docs/impact-convergence.md, "One rank's
+        // solver"): in blocks of the support points' components, reordered
+        // by AMD, or else (or if PETSc's options choose the solver or the
+        // ordering) of the scalar matrix with nested dissection.
         check_petsc(MatMPIAIJGetLocalMat(A, MAT_INITIAL_MATRIX, &sequential),
                     "MatMPIAIJGetLocalMat");
-        check_petsc(KSPSetOperators(ksp, sequential, sequential),
-                    "KSPSetOperators");
+        PetscInt n_rows;
+        check_petsc(MatGetSize(sequential, &n_rows, nullptr), "MatGetSize");
+        if (block_size > 1 && n_rows % block_size == 0 &&
+            !factorization_set_by_options())
+          {
+            blocked =
+              std::make_unique<SymmetricBlockCopy>(sequential, block_size);
+            MatDestroy(&sequential);
+            check_petsc(KSPSetOperators(ksp,
+                                        blocked->matrix(),
+                                        blocked->matrix()),
+                        "KSPSetOperators");
+            check_petsc(MatCreateVecs(blocked->matrix(),
+                                      &copy_order_rhs,
+                                      &copy_order_solution),
+                        "MatCreateVecs");
+          }
+        else
+          check_petsc(KSPSetOperators(ksp, sequential, sequential),
+                      "KSPSetOperators");
         check_petsc(PCFactorSetMatSolverType(pc, MATSOLVERPETSC),
                     "PCFactorSetMatSolverType");
-        check_petsc(PCFactorSetMatOrderingType(pc, MATORDERINGND),
+        check_petsc(PCFactorSetMatOrderingType(pc,
+                                               blocked ? MATORDERINGNATURAL :
+                                                         MATORDERINGND),
                     "PCFactorSetMatOrderingType");
       }
     else
@@ -56,6 +101,10 @@ namespace DiskImpact
       KSPDestroy(&ksp);
     if (sequential != nullptr)
       MatDestroy(&sequential);
+    if (copy_order_rhs != nullptr)
+      VecDestroy(&copy_order_rhs);
+    if (copy_order_solution != nullptr)
+      VecDestroy(&copy_order_solution);
   }
 
   const FullMatrix<double> &
@@ -93,7 +142,15 @@ namespace DiskImpact
                                  PETScWrappers::MPI::Vector       &y)
   {
     const auto start = std::chrono::steady_clock::now();
-    check_petsc(KSPSolve(ksp, r, y), "KSPSolve");
+    if (blocked)
+      {
+        blocked->to_copy_order(r, copy_order_rhs);
+        check_petsc(KSPSolve(ksp, copy_order_rhs, copy_order_solution),
+                    "KSPSolve");
+        blocked->from_copy_order(copy_order_solution, y);
+      }
+    else
+      check_petsc(KSPSolve(ksp, r, y), "KSPSolve");
     solve_seconds +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
         .count();

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "dynamics/symmetric_block_copy.h"
+
 #include <deal.II/base/index_set.h>
 
 #include <deal.II/lac/full_matrix.h>
@@ -11,6 +13,7 @@
 
 #include <functional>
 #include <map>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -25,16 +28,18 @@ namespace DiskImpact
    *   u = y + X P(u_C),   where   u_C = y_C + S P(u_C)
    *
    * is a small dense system, solved by Newton's method. A is factorized
-   * once (MUMPS Cholesky) for the solver's life; a column of X costs one
-   * solve when its DoF joins C; a step then costs one solve with A, the
-   * dense Newton and |C| vector updates.
+   * once (Cholesky: MUMPS on several ranks; on one, PETSc's own, in blocks
+   * of @p block_size consecutive rows if that is > 1) for the solver's life; a
+   * column of X costs one solve when its DoF joins C; a step then costs one
+   * solve with A, the dense Newton and |C| vector updates.
    */
   class CondensedSolver
   {
   public:
     CondensedSolver(const dealii::PETScWrappers::MPI::SparseMatrix &A,
                     const dealii::IndexSet &locally_owned,
-                    MPI_Comm                communicator);
+                    MPI_Comm                communicator,
+                    unsigned int            block_size = 1);
     ~CondensedSolver();
     CondensedSolver(const CondensedSolver &) = delete;
     CondensedSolver &
@@ -119,7 +124,12 @@ namespace DiskImpact
     MPI_Comm         communicator;
     KSP              ksp = nullptr;
     /// A's sequential copy, factorized instead of A on one rank.
-    Mat                                          sequential = nullptr;
+    Mat sequential = nullptr;
+    /// Or its copy in blocks of @p block_size rows, with the solve's
+    /// right-hand side and solution in the copy's order.
+    std::unique_ptr<SymmetricBlockCopy>          blocked;
+    Vec                                          copy_order_rhs      = nullptr;
+    Vec                                          copy_order_solution = nullptr;
     std::vector<dealii::types::global_dof_index> observed_dofs;
     /// The positions in D of the DoFs this rank owns, and those DoFs.
     std::vector<unsigned int>                    owned_positions;

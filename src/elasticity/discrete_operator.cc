@@ -27,6 +27,10 @@ namespace DiskImpact
     dof_handler.reinit(triangulation);
     dof_handler.distribute_dofs(fe);
     DoFRenumbering::Cuthill_McKee(dof_handler);
+    // The components of each support point next to each other: the
+    // matrices are then made of dense blocks (used by CondensedSolver).
+    if (fe.n_components() > 1)
+      DoFRenumbering::support_point_wise(dof_handler);
     owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, relevant_dofs);
   }

@@ -350,9 +350,11 @@ namespace DiskImpact
     A.add(integrator.mass_coefficient(dt), op.mass_matrix());
     if (op.has_damping())
       A.add(integrator.damping_coefficient(dt), op.damping_matrix());
-    solver = std::make_unique<CondensedSolver>(A,
-                                               op.locally_owned_dofs(),
-                                               communicator);
+    solver = std::make_unique<CondensedSolver>(
+      A,
+      op.locally_owned_dofs(),
+      communicator,
+      op.get_dof_handler().get_fe().n_components());
     solver->set_observed_dofs(zone->candidate_dofs());
     solver->add_dofs(zone->active_dofs());
   }

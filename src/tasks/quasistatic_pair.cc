@@ -72,9 +72,11 @@ namespace DiskImpact
     std::iota(all.begin(), all.end(), 0u);
     zone->activate(all);
 
-    solver = std::make_unique<CondensedSolver>(op.stiffness_matrix(),
-                                               op.locally_owned_dofs(),
-                                               communicator);
+    solver = std::make_unique<CondensedSolver>(
+      op.stiffness_matrix(),
+      op.locally_owned_dofs(),
+      communicator,
+      op.get_dof_handler().get_fe().n_components());
     solver->set_observed_dofs(zone->candidate_dofs());
     solver->add_dofs(all);
 
