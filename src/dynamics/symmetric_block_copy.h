@@ -13,9 +13,10 @@ namespace DiskImpact
    * support_point_wise) is one block row, and the block rows are reordered
    * by approximate minimum degree (AMD) on the graph of the blocks. PETSc's
    * Cholesky factorizes this copy in its natural order with its block
-   * kernels: on the impact's meshes three times faster than the scalar
-   * factorization with nested dissection, each solve 15 % faster
-   * (docs/impact-convergence.md, "One rank's solver"). Any grouping of the
+   * kernels, several times faster than the scalar matrix with nested
+   * dissection; the solves are faster with cubic and quartic elements,
+   * slower with quadratic ones (docs/impact-convergence.md, "One rank's
+   * solver"). Any grouping of the
    * rows gives the same solution; the grouping by support point gives the
    * densest blocks.
    */
