@@ -14,6 +14,7 @@
 #include <cmath>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <numeric>
 #include <sstream>
 
@@ -83,6 +84,16 @@ namespace DiskImpact
                       "while epsilon's error bar exceeds this, up to "
                       "'Largest mesh levels' [-]; 0: exactly 'Mesh levels'. "
                       "A sweep adds them per point.");
+    prm.declare_entry("Separate time step error",
+                      "false",
+                      Patterns::Bool(),
+                      "Also run the last mesh level's coarser mesh with the "
+                      "last level's time step, and where the mesh sequence "
+                      "is not clean let the error bar be at least "
+                      "3 (|d_t| + |d_h|), the last difference split into "
+                      "its time-step part d_t and its mesh part d_h: errors "
+                      "of the two that cancel in the last difference then "
+                      "cannot make the bar small.");
     prm.declare_entry("Largest mesh levels",
                       "4",
                       Patterns::Integer(1, 6),
@@ -100,6 +111,7 @@ namespace DiskImpact
     penalty_levels      = prm.get_integer("Penalty levels");
     target_error        = prm.get_double("Target error");
     largest_mesh_levels = prm.get_integer("Largest mesh levels");
+    separate_time_step  = prm.get_bool("Separate time step error");
     prm.leave_subsection();
     require(target_error == 0. ||
               (mesh_levels >= 2 && largest_mesh_levels >= mesh_levels),
@@ -123,6 +135,13 @@ namespace DiskImpact
         finer.time_integrator =
           parameters.time_integrator.with_time_step_scaled(
             std::pow(0.5, level));
+      }
+    else if (factor == "split")
+      {
+        // mesh level - 1 with the time step of mesh level @p level
+        finer = refined(parameters, "mesh", level - 1);
+        finer.time_integrator =
+          finer.time_integrator.with_time_step_scaled(0.5);
       }
     else if (factor == "time step")
       finer.time_integrator =
@@ -155,6 +174,8 @@ namespace DiskImpact
     std::iota(order.begin(), order.end(), 0u);
     auto cost = [&](const unsigned int i) {
       // DoFs x steps: 4 x 2 per mesh level, 2 per time-step level.
+      if (runs[i].factor == "split")
+        return 2. * std::pow(8., runs[i].level - 1.);
       return std::pow(runs[i].factor == "mesh"      ? 8. :
                       runs[i].factor == "time step" ? 2. :
                                                       1.,
@@ -266,7 +287,36 @@ namespace DiskImpact
           continue;
         result.epsilon += limit.extrapolated - result.base.epsilon;
         result.error += limit.error;
+        if (!limit.clean)
+          add_separate_time_step_error(result, values);
       }
+  }
+
+  void
+  ImpactConvergenceStudy::add_separate_time_step_error(
+    ConvergedEpsilon          &result,
+    const std::vector<double> &mesh_values)
+  {
+    // The last mesh level L and the run of mesh level L - 1 with the time
+    // step of L: d = d_t + d_h, the time step's part and the mesh's.
+    const unsigned int last = mesh_values.size() - 1;
+    const auto         split =
+      std::find_if(result.runs.begin(), result.runs.end(), [&](const auto &r) {
+        return r.factor == "split" && r.level == last;
+      });
+    if (split == result.runs.end())
+      return;
+    const double time_part = split->summary.epsilon - mesh_values[last - 1];
+    const double mesh_part = mesh_values[last] - split->summary.epsilon;
+    RichardsonEstimate apart;
+    apart.extrapolated  = mesh_values[last];
+    apart.order         = std::numeric_limits<double>::quiet_NaN();
+    apart.order_scatter = std::numeric_limits<double>::quiet_NaN();
+    // The first-order fallback of each part, as for the mesh sequence.
+    apart.error  = 3. * (std::abs(time_part) + std::abs(mesh_part));
+    result.error = std::max(result.error, apart.error);
+    result.factors.push_back("split");
+    result.estimates.push_back(apart);
   }
 
   ConvergedEpsilon
@@ -285,6 +335,11 @@ namespace DiskImpact
           points.push_back(
             refined(parameters, factor_sequences[i].name, level));
         }
+    if (separate_time_step && mesh_levels >= 2)
+      {
+        runs.push_back({"split", mesh_levels - 1, {}, 0.});
+        points.push_back(refined(parameters, "split", mesh_levels - 1));
+      }
     if (log != nullptr)
       *log << "    factor  l    DoFs   dt [R/c]      epsilon   energy"
               " err.  time\n";
@@ -299,11 +354,15 @@ namespace DiskImpact
          level < largest_mesh_levels;
          ++level)
       {
-        const auto finer = run_all({{"mesh", level, {}, 0.}},
-                                   {refined(parameters, "mesh", level)},
-                                   communicator,
-                                   log);
-        result.runs.push_back(finer.front());
+        std::vector<StudyRun>   more{{"mesh", level, {}, 0.}};
+        std::vector<Parameters> more_points{refined(parameters, "mesh", level)};
+        if (separate_time_step)
+          {
+            more.push_back({"split", level, {}, 0.});
+            more_points.push_back(refined(parameters, "split", level));
+          }
+        const auto finer = run_all(more, more_points, communicator, log);
+        result.runs.insert(result.runs.end(), finer.begin(), finer.end());
         estimate(result);
       }
     return result;
@@ -426,7 +485,12 @@ namespace DiskImpact
             << std::setprecision(2) << std::setw(7) << e.order
             << std::setprecision(8) << std::setw(13) << e.extrapolated
             << std::scientific << std::setprecision(2) << std::setw(10)
-            << e.error << why_not_clean(e) << '\n';
+            << e.error
+            << (result.factors[i] == "split" ?
+                  "  (the last mesh difference's time-step and mesh parts "
+                  "apart)" :
+                  why_not_clean(e))
+            << '\n';
       }
     out << std::fixed << std::setprecision(8)
         << "  epsilon = " << result.epsilon << " +- " << std::scientific

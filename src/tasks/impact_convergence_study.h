@@ -18,7 +18,9 @@ namespace DiskImpact
   /// One run of a convergence study.
   struct StudyRun
   {
-    std::string   factor; ///< "mesh", "time step" or "penalty"
+    /// "mesh", "time step", "penalty", or "split": the mesh of mesh level
+    /// l - 1 with the time step of level l
+    std::string   factor;
     unsigned int  level = 0;
     ImpactSummary summary;
     double        wall_time = 0.; ///< whole run [s]
@@ -27,10 +29,10 @@ namespace DiskImpact
   /// epsilon of one impact with its error bar, and how it was found.
   struct ConvergedEpsilon
   {
-    double                          epsilon = 0.; ///< extrapolated
-    double                          error   = 0.; ///< the mesh sequence's
-    ImpactSummary                   base;         ///< the coarsest run
-    std::vector<StudyRun>           runs;
+    double                epsilon = 0.; ///< extrapolated
+    double                error = 0.; ///< the mesh sequence's (or the split's)
+    ImpactSummary         base;       ///< the coarsest run
+    std::vector<StudyRun> runs;
     std::vector<std::string>        factors;
     std::vector<RichardsonEstimate> estimates; ///< per factor
   };
@@ -106,6 +108,13 @@ namespace DiskImpact
     /// error bar from the mesh sequence.
     static void
     estimate(ConvergedEpsilon &result);
+    /// Where the mesh sequence @p mesh_values (base first) is not clean
+    /// and a "split" run of its last level exists: the error bar at least
+    /// 3 (|d_t| + |d_h|), the last difference's time-step and mesh parts
+    /// bounded apart (a row "split" of the estimates).
+    static void
+    add_separate_time_step_error(ConvergedEpsilon          &result,
+                                 const std::vector<double> &mesh_values);
     /// @p parameters with @p factor refined @p level times.
     static Parameters
     refined(const Parameters  &parameters,
@@ -117,6 +126,7 @@ namespace DiskImpact
     unsigned int penalty_levels      = 3;
     double       target_error        = 0.; ///< 0: exactly mesh_levels
     unsigned int largest_mesh_levels = 3;
+    bool         separate_time_step  = false;
   };
 
   /// Task 'impact convergence': the study at 'Velocity', printed and
