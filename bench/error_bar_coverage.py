@@ -13,8 +13,9 @@ The model "quick" (params/impact_convergence_quick.prm, cubic, two mesh
 levels: the two-second estimate) is run only when asked for, and so are the
 sweeps' studies, "sweep-stress" and "sweep-strain" (params/sweep.prm and
 params/sweep_plane_strain.prm as one study at each speed: mesh levels added
-while the bar exceeds their 'Target error'); for those, "one level finer" is
-one beyond the levels the study chose.
+while the bar exceeds their 'Target error', or the time step of the last two
+halved); for those, "one level finer" is one beyond the levels the study
+chose, with its time step halved as often as the study's finest run.
 
 usage: bench/error_bar_coverage.py [--speeds 0.005,0.1]
                                    [--models stress,strain,quick,sweep-stress,sweep-strain]
@@ -41,10 +42,11 @@ MODELS = {
 }
 
 
-def study(diskimpact, template, velocity, directory, levels=None):
+def study(diskimpact, template, velocity, directory, levels=None, halvings=0):
     """Run the study of @template at @velocity (a sweep's file as one study)
-    with its own mesh levels, or with exactly @levels and no target error;
-    return (mesh levels run, wall seconds)."""
+    with its own mesh levels, or with exactly @levels, no target error and
+    the base time step halved @halvings times; return (mesh levels run, the
+    time step halvings of its finest run, wall seconds)."""
     text = open(os.path.join(ROOT, template)).read()
     text = re.sub(r"set Task\s*=\s*sweep", "set Task = impact convergence", text)
     text = re.sub(r"set Velocities\s*=.*", f"set Velocity = {velocity}", text)
@@ -52,6 +54,11 @@ def study(diskimpact, template, velocity, directory, levels=None):
     if levels is not None:
         text = re.sub(r"set Mesh levels\s*=\s*\d+", f"set Mesh levels = {levels}", text)
         text = re.sub(r"set Target error\s*=.*", "set Target error = 0", text)
+        text = re.sub(r"set Largest time step halvings\s*=.*",
+                      "set Largest time step halvings = 0", text)
+        fraction = float(re.search(r"set Time step fraction\s*=\s*([0-9.eE+-]+)", text)[1])
+        text = re.sub(r"set Time step fraction\s*=.*",
+                      f"set Time step fraction = {fraction * 0.5 ** halvings!r}", text)
     text = re.sub(r"set Velocity\s*=\s*[0-9.eE+-]+", f"set Velocity = {velocity}", text)
     text = re.sub(r"set Output directory\s*=.*", f"set Output directory = {directory}", text)
     prm = os.path.join(directory + ".prm")
@@ -61,8 +68,10 @@ def study(diskimpact, template, velocity, directory, levels=None):
     subprocess.run(["mpirun", "-np", "2", diskimpact, prm],
                    check=True, stdout=subprocess.DEVNULL, env=env)
     seconds = time.time() - start
-    runs = csv.DictReader(open(os.path.join(directory, "impact_convergence.csv")))
-    return sum(r["factor"] in ("base", "mesh") for r in runs), seconds
+    runs = list(csv.DictReader(open(os.path.join(directory, "impact_convergence.csv"))))
+    mesh = [(int(r["level"]), int(r["time_halvings"])) for r in runs
+            if r["factor"] in ("base", "mesh")]
+    return max(mesh)[0] + 1, max(mesh)[1], seconds
 
 
 def main():
@@ -78,12 +87,12 @@ def main():
             for v in args.speeds.split(","):
                 shipped = os.path.join(work, f"{model}_{v}")
                 finer = shipped + "_finer"
-                shipped_levels, seconds = study(args.diskimpact, template, v, shipped)
+                shipped_levels, halvings, seconds = study(args.diskimpact, template, v, shipped)
                 total = next(r for r in csv.DictReader(open(os.path.join(shipped, "epsilon_estimate.csv")))
                              if r["factor"] == "total")
                 epsilon, bar = float(total["limit"]), float(total["error"])
-                levels, finer_seconds = study(args.diskimpact, template, v, finer,
-                                              shipped_levels + 1)
+                levels, _, finer_seconds = study(args.diskimpact, template, v, finer,
+                                                 shipped_levels + 1, halvings)
                 runs = list(csv.DictReader(open(os.path.join(finer, "impact_convergence.csv"))))
                 finest = next(float(r["epsilon"]) for r in runs
                               if r["factor"] == "mesh" and int(r["level"]) == levels - 1)
@@ -91,7 +100,8 @@ def main():
                        abs(finest - epsilon) <= bar, finer_seconds)
                 rows.append(row)
                 print(f"{name}, v = {v} c: {epsilon:.8f} +- {bar:.2e} "
-                      f"({shipped_levels} levels, {seconds:.1f} s); "
+                      f"({shipped_levels} levels, time step halved {halvings} more times, "
+                      f"{seconds:.1f} s); "
                       f"level {levels - 1}: {finest:.8f}, distance {row[6]:.2e}, "
                       f"{'inside' if row[7] else 'OUTSIDE'} ({finer_seconds:.1f} s)", flush=True)
     print("\n| model | v/c | ε ± bar (shipped) | wall | one level finer | distance | inside |")

@@ -41,8 +41,12 @@ namespace DiskImpact
     describe(const StudyRun &run)
     {
       std::ostringstream line;
-      line << std::setw(10) << run.factor << std::setw(3) << run.level
-           << std::setw(8) << run.summary.n_dofs << std::setw(12)
+      // a level with further time step halvings as "level+halvings"
+      const std::string level =
+        std::to_string(run.level) +
+        (run.time_halvings > 0 ? "+" + std::to_string(run.time_halvings) : "");
+      line << std::setw(10) << run.factor << std::setw(4) << level
+           << std::setw(7) << run.summary.n_dofs << std::setw(12)
            << std::scientific << std::setprecision(3) << run.summary.time_step
            << std::fixed << std::setprecision(8) << std::setw(13)
            << run.summary.epsilon << std::scientific << std::setprecision(1)
@@ -99,6 +103,15 @@ namespace DiskImpact
                       Patterns::Integer(1, 6),
                       "With a 'Target error': the most mesh levels a study "
                       "may run [-]; at least 'Mesh levels'.");
+    prm.declare_entry("Largest time step halvings",
+                      "0",
+                      Patterns::Integer(0, 4),
+                      "With a 'Target error' and 'Separate time step error': "
+                      "the most times the study may halve the time step of "
+                      "its last two mesh levels instead of adding a mesh "
+                      "level, which it does while the time step's part of "
+                      "the last difference is at least half the mesh's [-]; "
+                      "0: never.");
     prm.leave_subsection();
   }
 
@@ -106,13 +119,18 @@ namespace DiskImpact
   ImpactConvergenceStudy::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Impact convergence");
-    mesh_levels         = prm.get_integer("Mesh levels");
-    time_step_levels    = prm.get_integer("Time step levels");
-    penalty_levels      = prm.get_integer("Penalty levels");
-    target_error        = prm.get_double("Target error");
-    largest_mesh_levels = prm.get_integer("Largest mesh levels");
-    separate_time_step  = prm.get_bool("Separate time step error");
+    mesh_levels           = prm.get_integer("Mesh levels");
+    time_step_levels      = prm.get_integer("Time step levels");
+    penalty_levels        = prm.get_integer("Penalty levels");
+    target_error          = prm.get_double("Target error");
+    largest_mesh_levels   = prm.get_integer("Largest mesh levels");
+    separate_time_step    = prm.get_bool("Separate time step error");
+    largest_time_halvings = prm.get_integer("Largest time step halvings");
     prm.leave_subsection();
+    require(largest_time_halvings == 0 ||
+              (target_error > 0. && separate_time_step),
+            "Impact convergence: 'Largest time step halvings' > 0 needs a "
+            "'Target error' and 'Separate time step error = true'");
     require(target_error == 0. ||
               (mesh_levels >= 2 && largest_mesh_levels >= mesh_levels),
             "Impact convergence: a 'Target error' needs 'Mesh levels' >= 2 "
@@ -124,8 +142,16 @@ namespace DiskImpact
   Parameters
   ImpactConvergenceStudy::refined(const Parameters  &parameters,
                                   const std::string &factor,
-                                  const unsigned int level)
+                                  const unsigned int level,
+                                  const unsigned int time_halvings)
   {
+    if (time_halvings > 0)
+      {
+        Parameters finer      = refined(parameters, factor, level);
+        finer.time_integrator = finer.time_integrator.with_time_step_scaled(
+          std::pow(0.5, time_halvings));
+        return finer;
+      }
     Parameters finer = parameters;
     if (factor == "mesh")
       {
@@ -174,12 +200,13 @@ namespace DiskImpact
     std::iota(order.begin(), order.end(), 0u);
     auto cost = [&](const unsigned int i) {
       // DoFs x steps: 4 x 2 per mesh level, 2 per time-step level.
+      const double halved = std::pow(2., runs[i].time_halvings);
       if (runs[i].factor == "split")
-        return 2. * std::pow(8., runs[i].level - 1.);
-      return std::pow(runs[i].factor == "mesh"      ? 8. :
-                      runs[i].factor == "time step" ? 2. :
-                                                      1.,
-                      runs[i].level);
+        return halved * 2. * std::pow(8., runs[i].level - 1.);
+      return halved * std::pow(runs[i].factor == "mesh"      ? 8. :
+                               runs[i].factor == "time step" ? 2. :
+                                                               1.,
+                               runs[i].level);
     };
     std::stable_sort(order.begin(),
                      order.end(),
@@ -209,6 +236,11 @@ namespace DiskImpact
         {
           throw std::runtime_error("convergence study, " + runs[i].factor +
                                    " level " + std::to_string(runs[i].level) +
+                                   (runs[i].time_halvings > 0 ?
+                                                        " (time step halved " +
+                                        std::to_string(runs[i].time_halvings) +
+                                        " more times)" :
+                                                        "") +
                                    ": " + e.what());
         }
 
@@ -228,7 +260,11 @@ namespace DiskImpact
                                                  s.one_dof_epsilon}};
       std::copy(values.begin(), values.end(), &fields[n_fields * i]);
       if (log != nullptr)
-        *log << describe({runs[i].factor, runs[i].level, s, seconds})
+        *log << describe({runs[i].factor,
+                          runs[i].level,
+                          runs[i].time_halvings,
+                          s,
+                          seconds})
              << std::flush;
     };
     // A run that fails on one rank fails the study on all (after each rank
@@ -261,19 +297,65 @@ namespace DiskImpact
     return done;
   }
 
+  namespace
+  {
+    /// The mesh level and the time level (the number of times the base time
+    /// step is halved) of @p run; the penalty runs have neither.
+    std::pair<int, int>
+    mesh_and_time_level(const StudyRun &run)
+    {
+      const int l = run.level, k = run.time_halvings;
+      if (run.factor == "mesh")
+        return {l, l + k};
+      if (run.factor == "split")
+        return {l - 1, l + k};
+      if (run.factor == "time step")
+        return {0, l};
+      if (run.factor == "base")
+        return {0, 0};
+      return {-1, -1};
+    }
+
+    /// The run of @p result on mesh level @p m with time level @p t (null if
+    /// there is none).
+    const StudyRun *
+    find_run(const ConvergedEpsilon &result, const int m, const int t)
+    {
+      for (const auto &run : result.runs)
+        if (mesh_and_time_level(run) == std::make_pair(m, t))
+          return &run;
+      return nullptr;
+    }
+
+    /// The mesh run with the finest mesh, and on it the finest time step.
+    const StudyRun &
+    finest_mesh_run(const ConvergedEpsilon &result)
+    {
+      const StudyRun *finest = &result.runs.front();
+      for (const auto &run : result.runs)
+        if ((run.factor == "mesh" || run.factor == "base") &&
+            mesh_and_time_level(run) > mesh_and_time_level(*finest))
+          finest = &run;
+      return *finest;
+    }
+  } // namespace
+
   void
   ImpactConvergenceStudy::estimate(ConvergedEpsilon &result)
   {
-    result.base    = result.runs.front().summary;
-    result.epsilon = result.base.epsilon;
-    result.error   = 0.;
+    result.base      = result.runs.front().summary;
+    result.epsilon   = result.base.epsilon;
+    result.error     = 0.;
+    result.time_part = std::numeric_limits<double>::quiet_NaN();
+    result.mesh_part = std::numeric_limits<double>::quiet_NaN();
     result.factors.clear();
     result.estimates.clear();
     for (const auto &sequence : factor_sequences)
       {
+        // The mesh sequence: its levels with their own time steps.
         std::vector<double> values{result.base.epsilon};
         for (const auto &run : result.runs)
-          if (run.factor == sequence.name)
+          if (run.factor == sequence.name && run.time_halvings == 0)
             values.push_back(run.summary.epsilon);
         if (values.size() < 2)
           continue;
@@ -288,35 +370,62 @@ namespace DiskImpact
         result.epsilon += limit.extrapolated - result.base.epsilon;
         result.error += limit.error;
         if (!limit.clean)
-          add_separate_time_step_error(result, values);
+          add_separate_time_step_error(result);
       }
   }
 
   void
-  ImpactConvergenceStudy::add_separate_time_step_error(
-    ConvergedEpsilon          &result,
-    const std::vector<double> &mesh_values)
+  ImpactConvergenceStudy::add_separate_time_step_error(ConvergedEpsilon &result)
   {
-    // The last mesh level L and the run of mesh level L - 1 with the time
-    // step of L: d = d_t + d_h, the time step's part and the mesh's.
-    const unsigned int last = mesh_values.size() - 1;
-    const auto         split =
-      std::find_if(result.runs.begin(), result.runs.end(), [&](const auto &r) {
-        return r.factor == "split" && r.level == last;
-      });
-    if (split == result.runs.end())
+    // The finest run (mesh level L, time level T), the run of mesh level
+    // L - 1 with the same time step and that mesh's run with twice the
+    // step: d = d_t + d_h, the time step's part and the mesh's.
+    const auto [L, T]        = mesh_and_time_level(finest_mesh_run(result));
+    const auto *finest       = find_run(result, L, T);
+    const auto *coarser_mesh = find_run(result, L - 1, T);
+    const auto *coarser_both = find_run(result, L - 1, T - 1);
+    if (L < 1 || coarser_mesh == nullptr || coarser_both == nullptr)
       return;
-    const double time_part = split->summary.epsilon - mesh_values[last - 1];
-    const double mesh_part = mesh_values[last] - split->summary.epsilon;
+    result.time_part =
+      coarser_mesh->summary.epsilon - coarser_both->summary.epsilon;
+    result.mesh_part = finest->summary.epsilon - coarser_mesh->summary.epsilon;
     RichardsonEstimate apart;
-    apart.extrapolated  = mesh_values[last];
+    apart.extrapolated  = finest->summary.epsilon;
     apart.order         = std::numeric_limits<double>::quiet_NaN();
     apart.order_scatter = std::numeric_limits<double>::quiet_NaN();
     // The first-order fallback of each part, as for the mesh sequence.
-    apart.error  = 3. * (std::abs(time_part) + std::abs(mesh_part));
-    result.error = std::max(result.error, apart.error);
+    apart.error =
+      3. * (std::abs(result.time_part) + std::abs(result.mesh_part));
+    if (T > L)
+      {
+        // With the time step halved beyond the mesh sequence's, epsilon is
+        // the finest run and this is its bar.
+        result.epsilon = apart.extrapolated;
+        result.error   = apart.error;
+      }
+    else
+      result.error = std::max(result.error, apart.error);
     result.factors.push_back("split");
     result.estimates.push_back(apart);
+  }
+
+  std::vector<StudyRun>
+  ImpactConvergenceStudy::next_refinement(const ConvergedEpsilon &result) const
+  {
+    const StudyRun    &finest = finest_mesh_run(result);
+    const unsigned int L      = finest.level;
+    const unsigned int k      = finest.time_halvings;
+    // A halving costs the last level's run twice over, a mesh level eight
+    // times over (twice the steps, four times the DoFs).
+    if (k < largest_time_halvings && !std::isnan(result.time_part) &&
+        std::abs(result.time_part) >= 0.5 * std::abs(result.mesh_part))
+      return {{"mesh", L, k + 1, {}, 0.}, {"split", L, k + 1, {}, 0.}};
+    if (L + 1 >= largest_mesh_levels)
+      return {};
+    std::vector<StudyRun> more{{"mesh", L + 1, k, {}, 0.}};
+    if (separate_time_step)
+      more.push_back({"split", L + 1, k, {}, 0.});
+    return more;
   }
 
   ConvergedEpsilon
@@ -324,43 +433,40 @@ namespace DiskImpact
                               MPI_Comm          communicator,
                               std::ostream     *log) const
   {
-    std::vector<StudyRun>             runs{{"base", 0, {}, 0.}};
+    std::vector<StudyRun>             runs{{"base", 0, 0, {}, 0.}};
     std::vector<Parameters>           points{parameters};
     const std::array<unsigned int, 3> levels{
       {mesh_levels, time_step_levels, penalty_levels}};
     for (unsigned int i = 0; i < levels.size(); ++i)
       for (unsigned int level = 1; level < levels[i]; ++level)
         {
-          runs.push_back({factor_sequences[i].name, level, {}, 0.});
+          runs.push_back({factor_sequences[i].name, level, 0, {}, 0.});
           points.push_back(
             refined(parameters, factor_sequences[i].name, level));
         }
     if (separate_time_step && mesh_levels >= 2)
       {
-        runs.push_back({"split", mesh_levels - 1, {}, 0.});
+        runs.push_back({"split", mesh_levels - 1, 0, {}, 0.});
         points.push_back(refined(parameters, "split", mesh_levels - 1));
       }
     if (log != nullptr)
-      *log << "    factor  l    DoFs   dt [R/c]      epsilon   energy"
+      *log << "    factor   l   DoFs   dt [R/c]      epsilon   energy"
               " err.  time\n";
 
     ConvergedEpsilon result;
     result.runs = run_all(runs, points, communicator, log);
     estimate(result);
-    // One more mesh level at a time while the bar exceeds the target (every
-    // rank sees the same bar, so all take the same decision).
-    for (unsigned int level = mesh_levels;
-         target_error > 0. && result.error > target_error &&
-         level < largest_mesh_levels;
-         ++level)
+    // More runs while the bar exceeds the target (every rank sees the same
+    // bar, so all take the same decision).
+    while (target_error > 0. && result.error > target_error)
       {
-        std::vector<StudyRun>   more{{"mesh", level, {}, 0.}};
-        std::vector<Parameters> more_points{refined(parameters, "mesh", level)};
-        if (separate_time_step)
-          {
-            more.push_back({"split", level, {}, 0.});
-            more_points.push_back(refined(parameters, "split", level));
-          }
+        const auto more = next_refinement(result);
+        if (more.empty())
+          break;
+        std::vector<Parameters> more_points;
+        for (const auto &run : more)
+          more_points.push_back(
+            refined(parameters, run.factor, run.level, run.time_halvings));
         const auto finer = run_all(more, more_points, communicator, log);
         result.runs.insert(result.runs.end(), finer.begin(), finer.end());
         estimate(result);
@@ -373,6 +479,7 @@ namespace DiskImpact
   {
     CsvTable table({"factor",
                     "level",
+                    "time_halvings",
                     "n_dofs",
                     "time_step",
                     "epsilon",
@@ -387,6 +494,7 @@ namespace DiskImpact
         table.start_row();
         table.add(run.factor);
         table.add(run.level);
+        table.add(run.time_halvings);
         table.add(run.summary.n_dofs);
         for (const double value : {run.summary.time_step,
                                    run.summary.epsilon,

@@ -7,6 +7,7 @@
 
 #include <mpi.h>
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -20,8 +21,11 @@ namespace DiskImpact
   {
     /// "mesh", "time step", "penalty", or "split": the mesh of mesh level
     /// l - 1 with the time step of level l
-    std::string   factor;
-    unsigned int  level = 0;
+    std::string  factor;
+    unsigned int level = 0;
+    /// "mesh" and "split": the time step halved this many more times than
+    /// the level's own
+    unsigned int  time_halvings = 0;
     ImpactSummary summary;
     double        wall_time = 0.; ///< whole run [s]
   };
@@ -35,6 +39,10 @@ namespace DiskImpact
     std::vector<StudyRun> runs;
     std::vector<std::string>        factors;
     std::vector<RichardsonEstimate> estimates; ///< per factor
+    /// With a split run: the last difference's time-step part d_t and mesh
+    /// part d_h (NaN without)
+    double time_part = std::numeric_limits<double>::quiet_NaN();
+    double mesh_part = std::numeric_limits<double>::quiet_NaN();
   };
 
   /**
@@ -53,7 +61,10 @@ namespace DiskImpact
    * sequence refines everything together: epsilon and its error bar are
    * its limit and GCI; the other two are diagnostics. With a target error,
    * mesh levels are added one at a time while the mesh sequence's error
-   * bar exceeds it, up to a largest number of levels.
+   * bar exceeds it, up to a largest number of levels. With the time step's
+   * and the mesh's parts of the last difference measured apart ("split"),
+   * the study may instead halve the time step of its last two mesh levels
+   * where the time step's part is the one that keeps the bar large.
    */
   class ImpactConvergenceStudy
   {
@@ -108,25 +119,34 @@ namespace DiskImpact
     /// error bar from the mesh sequence.
     static void
     estimate(ConvergedEpsilon &result);
-    /// Where the mesh sequence @p mesh_values (base first) is not clean
-    /// and a "split" run of its last level exists: the error bar at least
-    /// 3 (|d_t| + |d_h|), the last difference's time-step and mesh parts
-    /// bounded apart (a row "split" of the estimates).
+    /// Where the mesh sequence is not clean and the split runs of the
+    /// finest run exist: the error bar at least 3 (|d_t| + |d_h|), the last
+    /// difference's time-step and mesh parts bounded apart (a row "split" of
+    /// the estimates); with the time step halved beyond the mesh sequence's,
+    /// epsilon is the finest run and this its bar.
     static void
-    add_separate_time_step_error(ConvergedEpsilon          &result,
-                                 const std::vector<double> &mesh_values);
-    /// @p parameters with @p factor refined @p level times.
+    add_separate_time_step_error(ConvergedEpsilon &result);
+    /// The runs that refine @p result next while its bar exceeds the target
+    /// (none: stop): a time step halving of the last two mesh levels where
+    /// the time step's part of the last difference is at least half the
+    /// mesh's (it costs a quarter of a mesh level), else one mesh level.
+    std::vector<StudyRun>
+    next_refinement(const ConvergedEpsilon &result) const;
+    /// @p parameters with @p factor refined @p level times and the time step
+    /// halved @p time_halvings more times.
     static Parameters
     refined(const Parameters  &parameters,
             const std::string &factor,
-            unsigned int       level);
+            unsigned int       level,
+            unsigned int       time_halvings = 0);
 
-    unsigned int mesh_levels         = 3;
-    unsigned int time_step_levels    = 3;
-    unsigned int penalty_levels      = 3;
-    double       target_error        = 0.; ///< 0: exactly mesh_levels
-    unsigned int largest_mesh_levels = 3;
-    bool         separate_time_step  = false;
+    unsigned int mesh_levels           = 3;
+    unsigned int time_step_levels      = 3;
+    unsigned int penalty_levels        = 3;
+    double       target_error          = 0.; ///< 0: exactly mesh_levels
+    unsigned int largest_mesh_levels   = 3;
+    bool         separate_time_step    = false;
+    unsigned int largest_time_halvings = 0;
   };
 
   /// Task 'impact convergence': the study at 'Velocity', printed and
