@@ -16,8 +16,9 @@ full-disk  Result files whose temporary file is /dev/full (every write fails
            with ENOSPC, as on a full disk): one line naming the file and the
            cause, exit code 1, no file under the result name, on 1 and 2
            ranks.
-lock       A second run into the directory of a running sweep refuses with
-           one line and touches nothing; the first ends as if alone.
+lock       A second run into the directory of a running sweep (held with
+           SIGSTOP meanwhile) refuses with one line and touches nothing;
+           the first ends as if alone.
 """
 import argparse
 import csv
@@ -261,9 +262,13 @@ def scenario_lock(args, root):
         f.write(SWEEP_PRM)
     first = start(args, work)
     wait_for_rows(first, work, 1)
+    # Held (SIGSTOP) while the second run tries: it must still be running
+    # then, however fast its points are on this machine.
+    signal_all(first, signal.SIGSTOP)
     before = sorted(os.listdir(os.path.join(work, "output")))
     second = start(args, work, 1)
     out, err = second.communicate(timeout=60)
+    signal_all(first, signal.SIGCONT)
     lines = err.splitlines()
     if second.returncode == 0 or len(lines) != 1 or \
             "is in use by another diskimpact run" not in lines[0]:
