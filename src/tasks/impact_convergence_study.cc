@@ -37,6 +37,23 @@ namespace DiskImpact
     const std::array<FactorSequence, 3> factor_sequences{
       {{"mesh", 2., 1.}, {"time step", 2., 2.}, {"penalty", 4., 1.}}};
 
+    /// The mesh level and the time level (the number of times the base time
+    /// step is halved) of @p run; the penalty runs have neither.
+    std::pair<int, int>
+    mesh_and_time_level(const StudyRun &run)
+    {
+      const int l = run.level, k = run.time_halvings;
+      if (run.factor == "mesh")
+        return {l, l + k};
+      if (run.factor == "split")
+        return {l - 1, l + k};
+      if (run.factor == "time step")
+        return {0, l};
+      if (run.factor == "base")
+        return {0, 0};
+      return {-1, -1};
+    }
+
     std::string
     describe(const StudyRun &run)
     {
@@ -199,14 +216,10 @@ namespace DiskImpact
     std::vector<unsigned int> order(runs.size());
     std::iota(order.begin(), order.end(), 0u);
     auto cost = [&](const unsigned int i) {
-      // DoFs x steps: 4 x 2 per mesh level, 2 per time-step level.
-      const double halved = std::pow(2., runs[i].time_halvings);
-      if (runs[i].factor == "split")
-        return halved * 2. * std::pow(8., runs[i].level - 1.);
-      return halved * std::pow(runs[i].factor == "mesh"      ? 8. :
-                               runs[i].factor == "time step" ? 2. :
-                                                               1.,
-                               runs[i].level);
+      // DoFs x steps: 4 per mesh level, 2 per time level (a penalty run
+      // costs the base's).
+      const auto [m, t] = mesh_and_time_level(runs[i]);
+      return m < 0 ? 1. : std::pow(4., m) * std::pow(2., t);
     };
     std::stable_sort(order.begin(),
                      order.end(),
@@ -299,23 +312,6 @@ namespace DiskImpact
 
   namespace
   {
-    /// The mesh level and the time level (the number of times the base time
-    /// step is halved) of @p run; the penalty runs have neither.
-    std::pair<int, int>
-    mesh_and_time_level(const StudyRun &run)
-    {
-      const int l = run.level, k = run.time_halvings;
-      if (run.factor == "mesh")
-        return {l, l + k};
-      if (run.factor == "split")
-        return {l - 1, l + k};
-      if (run.factor == "time step")
-        return {0, l};
-      if (run.factor == "base")
-        return {0, 0};
-      return {-1, -1};
-    }
-
     /// The run of @p result on mesh level @p m with time level @p t (null if
     /// there is none).
     const StudyRun *
@@ -380,17 +376,17 @@ namespace DiskImpact
     // The finest run (mesh level L, time level T), the run of mesh level
     // L - 1 with the same time step and that mesh's run with twice the
     // step: d = d_t + d_h, the time step's part and the mesh's.
-    const auto [L, T]        = mesh_and_time_level(finest_mesh_run(result));
-    const auto *finest       = find_run(result, L, T);
+    const StudyRun &finest   = finest_mesh_run(result);
+    const auto [L, T]        = mesh_and_time_level(finest);
     const auto *coarser_mesh = find_run(result, L - 1, T);
     const auto *coarser_both = find_run(result, L - 1, T - 1);
     if (L < 1 || coarser_mesh == nullptr || coarser_both == nullptr)
       return;
     result.time_part =
       coarser_mesh->summary.epsilon - coarser_both->summary.epsilon;
-    result.mesh_part = finest->summary.epsilon - coarser_mesh->summary.epsilon;
+    result.mesh_part = finest.summary.epsilon - coarser_mesh->summary.epsilon;
     RichardsonEstimate apart;
-    apart.extrapolated  = finest->summary.epsilon;
+    apart.extrapolated  = finest.summary.epsilon;
     apart.order         = std::numeric_limits<double>::quiet_NaN();
     apart.order_scatter = std::numeric_limits<double>::quiet_NaN();
     // The first-order fallback of each part, as for the mesh sequence.

@@ -265,10 +265,12 @@ def scenario_lock(args, root):
     # Held (SIGSTOP) while the second run tries: it must still be running
     # then, however fast its points are on this machine.
     signal_all(first, signal.SIGSTOP)
-    before = sorted(os.listdir(os.path.join(work, "output")))
-    second = start(args, work, 1)
-    out, err = second.communicate(timeout=60)
-    signal_all(first, signal.SIGCONT)
+    try:
+        before = sorted(os.listdir(os.path.join(work, "output")))
+        second = start(args, work, 1)
+        out, err = second.communicate(timeout=60)
+    finally:
+        signal_all(first, signal.SIGCONT)
     lines = err.splitlines()
     if second.returncode == 0 or len(lines) != 1 or \
             "is in use by another diskimpact run" not in lines[0]:
