@@ -127,8 +127,11 @@ namespace DiskImpact
                       "the most times the study may halve the time step of "
                       "its last two mesh levels instead of adding a mesh "
                       "level, which it does while the time step's part of "
-                      "the last difference is at least half the mesh's [-]; "
-                      "0: never.");
+                      "the last difference is at least half the mesh's. A "
+                      "mesh level added after a halving keeps the finest "
+                      "step where the finest mesh's own halving moved "
+                      "epsilon by less than half the mesh's part, else "
+                      "halves it too [-]; 0: never.");
     prm.leave_subsection();
   }
 
@@ -418,6 +421,19 @@ namespace DiskImpact
       return {{"mesh", L, k + 1, {}, 0.}, {"split", L, k + 1, {}, 0.}};
     if (L + 1 >= largest_mesh_levels)
       return {};
+    // The mesh's part dominates, the step is already halved and the finest
+    // mesh's own halving moved epsilon by less than the same share of it:
+    // the next mesh level keeps the finest step, (L + 1, T), whose time part
+    // is that halving's. Its split run, mesh level L at T, is the finest run.
+    const auto [m, t]                    = mesh_and_time_level(finest);
+    const auto *finest_at_twice_the_step = find_run(result, m, t - 1);
+    if (k > 0 && finest_at_twice_the_step != nullptr &&
+        !std::isnan(result.time_part) &&
+        std::abs(result.time_part) < 0.5 * std::abs(result.mesh_part) &&
+        std::abs(finest.summary.epsilon -
+                 finest_at_twice_the_step->summary.epsilon) <
+          0.5 * std::abs(result.mesh_part))
+      return {{"mesh", L + 1, k - 1, {}, 0.}};
     std::vector<StudyRun> more{{"mesh", L + 1, k, {}, 0.}};
     if (separate_time_step)
       more.push_back({"split", L + 1, k, {}, 0.});
