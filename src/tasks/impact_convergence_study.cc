@@ -414,10 +414,12 @@ namespace DiskImpact
     const StudyRun    &finest = finest_mesh_run(result);
     const unsigned int L      = finest.level;
     const unsigned int k      = finest.time_halvings;
+    const bool         split  = !std::isnan(result.time_part);
+    const bool         time_dominates =
+      split && std::abs(result.time_part) >= 0.5 * std::abs(result.mesh_part);
     // A halving costs the last level's run twice over, a mesh level eight
     // times over (twice the steps, four times the DoFs).
-    if (k < largest_time_halvings && !std::isnan(result.time_part) &&
-        std::abs(result.time_part) >= 0.5 * std::abs(result.mesh_part))
+    if (k < largest_time_halvings && time_dominates)
       return {{"mesh", L, k + 1, {}, 0.}, {"split", L, k + 1, {}, 0.}};
     if (L + 1 >= largest_mesh_levels)
       return {};
@@ -427,9 +429,8 @@ namespace DiskImpact
     // is that halving's. Its split run, mesh level L at T, is the finest run.
     const auto [m, t]                    = mesh_and_time_level(finest);
     const auto *finest_at_twice_the_step = find_run(result, m, t - 1);
-    if (k > 0 && finest_at_twice_the_step != nullptr &&
-        !std::isnan(result.time_part) &&
-        std::abs(result.time_part) < 0.5 * std::abs(result.mesh_part) &&
+    if (k > 0 && split && !time_dominates &&
+        finest_at_twice_the_step != nullptr &&
         std::abs(finest.summary.epsilon -
                  finest_at_twice_the_step->summary.epsilon) <
           0.5 * std::abs(result.mesh_part))
