@@ -15,7 +15,9 @@ sweeps' studies, "sweep-stress" and "sweep-strain" (params/sweep.prm and
 params/sweep_plane_strain.prm as one study at each speed: mesh levels added
 while the bar exceeds their 'Target error', or the time step of the last two
 halved); for those, "one level finer" is one beyond the levels the study
-chose, with its time step halved as often as the study's finest run.
+chose, with its time step halved as often as the study's finest run, and
+every level halving the element size (where the study raised the degree
+instead, 'Degree levels from', the finer run is still the refined mesh).
 
 usage: bench/error_bar_coverage.py [--speeds 0.005,0.1]
                                    [--models stress,strain,quick,sweep-stress,sweep-strain]
@@ -56,6 +58,9 @@ def study(diskimpact, template, velocity, directory, levels=None, halvings=0):
         text = re.sub(r"set Target error\s*=.*", "set Target error = 0", text)
         text = re.sub(r"set Largest time step halvings\s*=.*",
                       "set Largest time step halvings = 0", text)
+        # the finer level halves the element size, also where the study
+        # raised the degree instead (a check independent of that choice)
+        text = re.sub(r"set Degree levels from\s*=.*", "set Degree levels from = 0", text)
         fraction = float(re.search(r"set Time step fraction\s*=\s*([0-9.eE+-]+)", text)[1])
         text = re.sub(r"set Time step fraction\s*=.*",
                       f"set Time step fraction = {fraction * 0.5 ** halvings!r}", text)

@@ -42,7 +42,7 @@ namespace DiskImpact
     prm.enter_subsection("Finite element");
     prm.declare_entry("Degree",
                       "2",
-                      Patterns::Integer(1, 4),
+                      Patterns::Integer(1, 6),
                       "Polynomial degree k of the vector Q_k elements; the "
                       "curved boundary is mapped with degree k as well.");
     prm.leave_subsection();

@@ -132,6 +132,15 @@ namespace DiskImpact
                       "step where the finest mesh's own halving moved "
                       "epsilon by less than half the mesh's part, else "
                       "halves it too [-]; 0: never.");
+    prm.declare_entry("Degree levels from",
+                      "0",
+                      Patterns::Integer(0, 6),
+                      "Mesh levels from this one on keep the mesh of the "
+                      "level before and raise the element degree by one "
+                      "instead; each still halves the time step and doubles "
+                      "the penalty factor, as halving the element size "
+                      "doubles k = kappa E2 / h [-]; 0: every level halves "
+                      "the element size.");
     prm.leave_subsection();
   }
 
@@ -146,7 +155,11 @@ namespace DiskImpact
     largest_mesh_levels   = prm.get_integer("Largest mesh levels");
     separate_time_step    = prm.get_bool("Separate time step error");
     largest_time_halvings = prm.get_integer("Largest time step halvings");
+    degree_levels_from    = prm.get_integer("Degree levels from");
     prm.leave_subsection();
+    require(degree_levels_from != 1,
+            "Impact convergence: 'Degree levels from = 1' would leave the "
+            "base mesh unrefined in every level; use 0 (never) or >= 2");
     require(largest_time_halvings == 0 ||
               (target_error > 0. && separate_time_step),
             "Impact convergence: 'Largest time step halvings' > 0 needs a "
@@ -163,7 +176,7 @@ namespace DiskImpact
   ImpactConvergenceStudy::refined(const Parameters  &parameters,
                                   const std::string &factor,
                                   const unsigned int level,
-                                  const unsigned int time_halvings)
+                                  const unsigned int time_halvings) const
   {
     if (time_halvings > 0)
       {
@@ -175,9 +188,19 @@ namespace DiskImpact
     Parameters finer = parameters;
     if (factor == "mesh")
       {
+        // From 'Degree levels from' on a level raises the degree on the mesh
+        // of the level before; the penalty factor doubles as k = kappa E2 / h
+        // does when h halves.
+        const unsigned int mesh_level =
+          degree_levels_from > 0 ? std::min(level, degree_levels_from - 1) :
+                                   level;
+        const unsigned int degree_level = level - mesh_level;
         finer.geometry.set_global_refinements(
-          parameters.geometry.global_refinements() + level);
-        finer.impact = parameters.impact.with_mesh_refined(level);
+          parameters.geometry.global_refinements() + mesh_level);
+        finer.impact = parameters.impact.with_mesh_refined(mesh_level);
+        finer.finite_element.degree += degree_level;
+        finer.contact.set_penalty_factor(parameters.contact.penalty_factor() *
+                                         std::pow(2., degree_level));
         finer.time_integrator =
           parameters.time_integrator.with_time_step_scaled(
             std::pow(0.5, level));

@@ -134,11 +134,11 @@ namespace DiskImpact
     next_refinement(const ConvergedEpsilon &result) const;
     /// @p parameters with @p factor refined @p level times and the time step
     /// halved @p time_halvings more times.
-    static Parameters
+    Parameters
     refined(const Parameters  &parameters,
             const std::string &factor,
             unsigned int       level,
-            unsigned int       time_halvings = 0);
+            unsigned int       time_halvings = 0) const;
 
     unsigned int mesh_levels           = 3;
     unsigned int time_step_levels      = 3;
@@ -147,6 +147,7 @@ namespace DiskImpact
     unsigned int largest_mesh_levels   = 3;
     bool         separate_time_step    = false;
     unsigned int largest_time_halvings = 0;
+    unsigned int degree_levels_from    = 0; ///< 0: every level refines h
   };
 
   /// Task 'impact convergence': the study at 'Velocity', printed and

@@ -133,9 +133,13 @@ namespace DiskImpact
           case Task::impact_convergence:
             in_context("Impact convergence: the finest of 'Mesh levels'",
                        [&]() {
+                         // a degree level's budget is its own degree's
                          const Parameters finest =
                            parameters.impact_convergence.finest(parameters);
-                         finest.impact.create_mesh(finest, mesh, budget);
+                         finest.impact.create_mesh(
+                           finest,
+                           mesh,
+                           cell_budget(finest.finite_element.degree, at_once));
                        });
             break;
           case Task::sweep:
@@ -149,7 +153,10 @@ namespace DiskImpact
               const auto &velocities = parameters.impact.velocities();
               fastest.impact.set_velocity(
                 *std::max_element(velocities.begin(), velocities.end()));
-              fastest.impact.create_mesh(fastest, mesh, budget);
+              fastest.impact.create_mesh(
+                fastest,
+                mesh,
+                cell_budget(fastest.finite_element.degree, at_once));
             });
             break;
           case Task::reference_models:
