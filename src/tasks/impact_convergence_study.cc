@@ -243,7 +243,8 @@ namespace DiskImpact
     std::iota(order.begin(), order.end(), 0u);
     auto cost = [&](const unsigned int i) {
       // DoFs x steps: 4 per mesh level, 2 per time level (a penalty run
-      // costs the base's).
+      // costs the base's; a degree level counts as a mesh level, though it
+      // costs about twice the level before it, not four times).
       const auto [m, t] = mesh_and_time_level(runs[i]);
       return m < 0 ? 1. : std::pow(4., m) * std::pow(2., t);
     };

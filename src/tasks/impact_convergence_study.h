@@ -55,6 +55,9 @@ namespace DiskImpact
    *              carries higher frequencies, which a fixed step does not
    *              resolve (docs/impact.md); ratio 2, expected order 1 (the
    *              penalty's gap error, proportional to 1/k, i.e. to h);
+   *              from a 'Degree levels from' level L0 on, the mesh of
+   *              level L0 - 1 with the degree raised by l - L0 + 1 and the
+   *              penalty factor doubled as often (k doubles per level);
    *   time step: dt / 2^l, ratio 2, expected order 2;
    *   penalty:   penalty factor * 4^l, ratio 4 in 1/k, expected order 1.
    * Each sequence is extrapolated (richardson_estimate()). The mesh
