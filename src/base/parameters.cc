@@ -221,16 +221,51 @@ namespace DiskImpact
 
   namespace
   {
+    /** Where a line of the expanded parameter text comes from. */
+    struct SourceLine
+    {
+      std::filesystem::path file;
+      unsigned int          line;
+    };
+
     /**
-     * Follow the 'include FILE' lines of parameter file @p filename as
-     * ParameterHandler will (FILE relative to the working directory, else
-     * to the including file's directory) and throw an InputError for a
-     * missing file or an include cycle, which would recurse without end.
+     * The file named by the 'include FILE' line @p line of @p including, or
+     * an empty path if @p line is no include line. FILE is taken relative
+     * to the working directory if it exists there, else relative to the
+     * including file's directory.
+     */
+    std::filesystem::path
+    included_file(const std::string &line, const std::filesystem::path &including)
+    {
+      const auto start = line.find_first_not_of(" \t");
+      if (start == std::string::npos ||
+          (line.compare(start, 8, "include ") != 0 &&
+           line.compare(start, 8, "INCLUDE ") != 0))
+        return {};
+      std::string name = line.substr(start + 8);
+      name             = name.substr(0, name.find('#'));
+      name             = Utilities::trim(name);
+      require(!name.empty(),
+              "in parameter file '" + including.string() +
+                "': 'include' names no file");
+      std::filesystem::path path(name);
+      if (!std::filesystem::exists(path) && path.is_relative())
+        path = including.parent_path() / name;
+      return path;
+    }
+
+    /**
+     * Append the lines of parameter file @p filename to @p text, each
+     * 'include FILE' line replaced by FILE's lines (recursively), and the
+     * origin of each line to @p origins. A missing file and an include
+     * cycle, which would recurse without end, throw an InputError.
      * @p chain: the files including this one.
      */
     void
-    check_includes(const std::filesystem::path        &filename,
-                   std::vector<std::filesystem::path> &chain)
+    expand_includes(const std::filesystem::path        &filename,
+                    std::vector<std::filesystem::path> &chain,
+                    std::string                        &text,
+                    std::vector<SourceLine>            &origins)
     {
       namespace fs = std::filesystem;
       require(fs::is_regular_file(filename),
@@ -247,20 +282,16 @@ namespace DiskImpact
       chain.push_back(canonical);
       std::ifstream in(filename);
       std::string   line;
-      while (std::getline(in, line))
+      for (unsigned int number = 1; std::getline(in, line); ++number)
         {
-          const auto start = line.find_first_not_of(" \t");
-          if (start == std::string::npos ||
-              line.compare(start, 8, "include ") != 0)
-            continue;
-          std::string included = line.substr(start + 8);
-          included             = included.substr(0, included.find('#'));
-          included.erase(included.find_last_not_of(" \t\r") + 1);
-          included.erase(0, included.find_first_not_of(" \t"));
-          fs::path path(included);
-          if (!fs::exists(path) && path.is_relative())
-            path = canonical.parent_path() / included;
-          check_includes(path, chain);
+          const fs::path included = included_file(line, filename);
+          if (!included.empty())
+            {
+              expand_includes(included, chain, text, origins);
+              continue;
+            }
+          text += line + '\n';
+          origins.push_back({filename, number});
         }
       chain.pop_back();
     }
@@ -270,11 +301,13 @@ namespace DiskImpact
   read_parameter_file(ParameterHandler &prm, const std::string &filename)
   {
     std::vector<std::filesystem::path> chain;
-    check_includes(filename, chain);
+    std::string                        text;
+    std::vector<SourceLine>            origins;
+    expand_includes(filename, chain, text, origins);
     // An empty file would run the defaults: almost surely not what was
     // meant.
     std::ifstream    in(filename);
-    const std::regex statement("^\\s*(set|SET|include|subsection)\\s");
+    const std::regex statement("^\\s*(set|SET|include|INCLUDE|subsection)\\s");
     std::string      line;
     bool             sets_something = false;
     while (!sets_something && std::getline(in, line))
@@ -285,7 +318,10 @@ namespace DiskImpact
               "'set Task = ...'");
     try
       {
-        prm.parse_input(filename);
+        // deal.II reads 'include' relative to the working directory only;
+        // the expanded text also finds a file beside the including one.
+        std::istringstream expanded(text);
+        prm.parse_input(expanded, filename);
       }
     catch (const ExceptionBase &e)
       {
@@ -295,17 +331,27 @@ namespace DiskImpact
         std::string message =
           std::regex_replace(info.str(), std::regex("\\s+"), " ");
         message = std::regex_replace(message, std::regex("^ | $"), "");
-        // Quote the offending line, which deal.II only numbers.
+        // Name the file and line the expanded text's line came from, and
+        // quote it (deal.II only numbers it).
         std::smatch where;
         if (std::regex_search(message,
                               where,
-                              std::regex("Line <([0-9]+)> of file <([^>]*)>")))
+                              std::regex("Line <([0-9]+)> of file <[^>]*>")))
           {
-            std::ifstream file(where[2].str());
-            std::string   text;
-            for (int n = std::stoi(where[1].str()); n > 0; --n)
-              std::getline(file, text);
-            message += " (the line reads '" + Utilities::trim(text) + "')";
+            const unsigned int n = std::stoul(where[1].str());
+            if (n >= 1 && n <= origins.size())
+              {
+                const SourceLine &origin = origins[n - 1];
+                std::istringstream lines(text);
+                std::string        quoted;
+                for (unsigned int i = 0; i < n; ++i)
+                  std::getline(lines, quoted);
+                message = where.prefix().str() + "Line <" +
+                          std::to_string(origin.line) + "> of file <" +
+                          origin.file.string() + ">" + where.suffix().str() +
+                          " (the line reads '" + Utilities::trim(quoted) +
+                          "')";
+              }
           }
         throw InputError("in parameter file '" + filename + "': " + message);
       }

@@ -62,9 +62,11 @@ namespace DiskImpact
   };
 
   /**
-   * Read @p filename into @p prm. A missing file, an unknown or misspelled
-   * entry or a value that does not match its pattern throws an InputError
-   * with a one-line message naming the file, the line and the entry.
+   * Read @p filename into @p prm, its 'include FILE' lines replaced by
+   * FILE (relative to the working directory, else to the including file). A
+   * missing file, an include cycle, an unknown or misspelled entry or a
+   * value that does not match its pattern throws an InputError with a
+   * one-line message naming the file, the line and the entry.
    */
   void
   read_parameter_file(dealii::ParameterHandler &prm,
