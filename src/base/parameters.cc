@@ -221,11 +221,12 @@ namespace DiskImpact
 
   namespace
   {
-    /** Where a line of the expanded parameter text comes from. */
+    /** A line of the expanded parameter text and where it comes from. */
     struct SourceLine
     {
       std::filesystem::path file;
-      unsigned int          line;
+      unsigned int          number;
+      std::string           text;
     };
 
     /**
@@ -235,7 +236,8 @@ namespace DiskImpact
      * including file's directory.
      */
     std::filesystem::path
-    included_file(const std::string &line, const std::filesystem::path &including)
+    included_file(const std::string           &line,
+                  const std::filesystem::path &including)
     {
       const auto start = line.find_first_not_of(" \t");
       if (start == std::string::npos ||
@@ -291,9 +293,60 @@ namespace DiskImpact
               continue;
             }
           text += line + '\n';
-          origins.push_back({filename, number});
+          origins.push_back({filename, number, line});
         }
       chain.pop_back();
+    }
+  } // namespace
+
+  namespace
+  {
+    /**
+     * Throw an InputError if parameter file @p filename has no statement: an
+     * empty file would run the defaults, almost surely not what was meant.
+     */
+    void
+    require_a_statement(const std::string &filename)
+    {
+      std::ifstream    in(filename);
+      const std::regex statement(
+        "^\\s*(set|SET|include|INCLUDE|subsection)\\s");
+      std::string line;
+      while (std::getline(in, line))
+        if (std::regex_search(line, statement))
+          return;
+      throw InputError("parameter file '" + filename +
+                       "' sets nothing (empty, or comments only): give at "
+                       "least 'set Task = ...'");
+    }
+
+    /**
+     * deal.II's message for a line it could not parse, folded into one
+     * line, with the line number of the expanded text replaced by the file
+     * and line of @p origins it comes from, and the line quoted (deal.II
+     * only numbers it).
+     */
+    std::string
+    one_line_message(const ExceptionBase           &error,
+                     const std::vector<SourceLine> &origins)
+    {
+      std::ostringstream info;
+      error.print_info(info);
+      std::string message =
+        std::regex_replace(info.str(), std::regex("\\s+"), " ");
+      message = std::regex_replace(message, std::regex("^ | $"), "");
+      std::smatch where;
+      if (!std::regex_search(message,
+                             where,
+                             std::regex("Line <([0-9]+)> of file <[^>]*>")))
+        return message;
+      const unsigned long n = std::stoul(where[1].str());
+      if (n < 1 || n > origins.size())
+        return message;
+      const SourceLine &origin = origins[n - 1];
+      return where.prefix().str() + "Line <" + std::to_string(origin.number) +
+             "> of file <" + origin.file.string() + ">" + where.suffix().str() +
+             " (the line reads '" + Utilities::trim(origin.text) + "')";
     }
   } // namespace
 
@@ -304,18 +357,7 @@ namespace DiskImpact
     std::string                        text;
     std::vector<SourceLine>            origins;
     expand_includes(filename, chain, text, origins);
-    // An empty file would run the defaults: almost surely not what was
-    // meant.
-    std::ifstream    in(filename);
-    const std::regex statement("^\\s*(set|SET|include|INCLUDE|subsection)\\s");
-    std::string      line;
-    bool             sets_something = false;
-    while (!sets_something && std::getline(in, line))
-      sets_something = std::regex_search(line, statement);
-    require(sets_something,
-            "parameter file '" + filename +
-              "' sets nothing (empty, or comments only): give at least "
-              "'set Task = ...'");
+    require_a_statement(filename);
     try
       {
         // deal.II reads 'include' relative to the working directory only;
@@ -325,35 +367,8 @@ namespace DiskImpact
       }
     catch (const ExceptionBase &e)
       {
-        // deal.II's message spans several lines: fold it into one.
-        std::ostringstream info;
-        e.print_info(info);
-        std::string message =
-          std::regex_replace(info.str(), std::regex("\\s+"), " ");
-        message = std::regex_replace(message, std::regex("^ | $"), "");
-        // Name the file and line the expanded text's line came from, and
-        // quote it (deal.II only numbers it).
-        std::smatch where;
-        if (std::regex_search(message,
-                              where,
-                              std::regex("Line <([0-9]+)> of file <[^>]*>")))
-          {
-            const unsigned int n = std::stoul(where[1].str());
-            if (n >= 1 && n <= origins.size())
-              {
-                const SourceLine &origin = origins[n - 1];
-                std::istringstream lines(text);
-                std::string        quoted;
-                for (unsigned int i = 0; i < n; ++i)
-                  std::getline(lines, quoted);
-                message = where.prefix().str() + "Line <" +
-                          std::to_string(origin.line) + "> of file <" +
-                          origin.file.string() + ">" + where.suffix().str() +
-                          " (the line reads '" + Utilities::trim(quoted) +
-                          "')";
-              }
-          }
-        throw InputError("in parameter file '" + filename + "': " + message);
+        throw InputError("in parameter file '" + filename +
+                         "': " + one_line_message(e, origins));
       }
   }
 } // namespace DiskImpact
