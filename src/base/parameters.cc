@@ -297,10 +297,7 @@ namespace DiskImpact
         }
       chain.pop_back();
     }
-  } // namespace
 
-  namespace
-  {
     /**
      * Throw an InputError if parameter file @p filename has no statement: an
      * empty file would run the defaults, almost surely not what was meant.
