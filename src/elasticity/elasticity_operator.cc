@@ -1,5 +1,6 @@
 #include "elasticity/elasticity_operator.h"
 
+#include "base/petsc_check.h"
 #include "body/geometry.h"
 
 #include <deal.II/base/mpi.h>
@@ -109,8 +110,9 @@ namespace DiskImpact
     };
     make_matrix(all_components, stiffness);
     make_matrix(same_component, mass);
+    // The tangent has K's pattern: a copy of its structure.
     if (with_tangent)
-      make_matrix(all_components, tangent);
+      tangent.reinit(stiffness);
   }
 
   void
@@ -289,8 +291,13 @@ namespace DiskImpact
       }
 
     std::vector<SymmetricTensor<2, 2>> eps(dofs_per_cell);
-    std::vector<Tensor<1, 2>>          phi(dofs_per_cell);
-    std::vector<double> hoop(dofs_per_cell), trace(dofs_per_cell);
+    std::vector<double> value(dofs_per_cell), hoop(dofs_per_cell),
+      trace(dofs_per_cell);
+    // Each shape function of the vector element is nonzero in one
+    // component only: the mass form couples equal components alone.
+    std::vector<unsigned int> component(dofs_per_cell);
+    for (unsigned int i = 0; i < dofs_per_cell; ++i)
+      component[i] = fe->system_to_component_index(i).first;
 
     mass      = 0.;
     stiffness = 0.;
@@ -312,22 +319,26 @@ namespace DiskImpact
           cell_mass      = 0.;
           cell_stiffness = 0.;
           cell_damping   = 0.;
+          // The three forms are symmetric: the lower triangle, mirrored
+          // below.
           for (const unsigned int q : fe_values.quadrature_point_indices())
             {
               const Point<2> &x = fe_values.quadrature_point(q);
               for (unsigned int i = 0; i < dofs_per_cell; ++i)
                 {
-                  phi[i]   = fe_values[displacement].value(i, q);
+                  const Tensor<1, 2> phi = fe_values[displacement].value(i, q);
+                  value[i]               = phi[component[i]];
                   eps[i]   = fe_values[displacement].symmetric_gradient(i, q);
-                  hoop[i]  = section.hoop_strain(phi[i], x);
+                  hoop[i]  = section.hoop_strain(phi, x);
                   trace[i] = dealii::trace(eps[i]);
                 }
               const double dx = fe_values.JxW(q) * section.measure(x);
               for (unsigned int i = 0; i < dofs_per_cell; ++i)
                 {
                   const SymmetricTensor<2, 2> c_eps_i = c * eps[i];
-                  const SymmetricTensor<2, 2> d_eps_i = d * eps[i];
-                  for (unsigned int j = 0; j < dofs_per_cell; ++j)
+                  const SymmetricTensor<2, 2> d_eps_i =
+                    with_damping ? d * eps[i] : SymmetricTensor<2, 2>();
+                  for (unsigned int j = 0; j <= i; ++j)
                     {
                       const double h_ij = section.is_axisymmetric() ?
                                             hoop_energy(material,
@@ -336,13 +347,22 @@ namespace DiskImpact
                                                         trace[j],
                                                         hoop[j]) :
                                             0.;
-                      cell_mass(i, j) += rho * (phi[i] * phi[j]) * dx;
+                      if (component[i] == component[j])
+                        cell_mass(i, j) += rho * value[i] * value[j] * dx;
                       cell_stiffness(i, j) += (c_eps_i * eps[j] + h_ij) * dx;
-                      cell_damping(i, j) +=
-                        (d_eps_i * eps[j] + tau * h_ij) * dx;
+                      if (with_damping)
+                        cell_damping(i, j) +=
+                          (d_eps_i * eps[j] + tau * h_ij) * dx;
                     }
                 }
             }
+          for (unsigned int i = 0; i < dofs_per_cell; ++i)
+            for (unsigned int j = 0; j < i; ++j)
+              {
+                cell_mass(j, i)      = cell_mass(i, j);
+                cell_stiffness(j, i) = cell_stiffness(i, j);
+                cell_damping(j, i)   = cell_damping(i, j);
+              }
           cell->get_dof_indices(dof_indices);
           redistribute_cell_mass(dof_indices, cell_mass);
           constraints.distribute_local_to_global(cell_mass, dof_indices, mass);
@@ -516,6 +536,29 @@ namespace DiskImpact
   ElasticityOperator::tangent_reset_to_stiffness()
   {
     tangent.copy_from(stiffness);
+    return tangent;
+  }
+
+  PETScWrappers::MPI::SparseMatrix &
+  ElasticityOperator::effective_matrix(const double stiffness_coefficient,
+                                       const double mass_coefficient,
+                                       const double damping_coefficient)
+  {
+    tangent.copy_from(stiffness);
+    tangent *= stiffness_coefficient;
+    // PETSc's sum for a known pattern: deal.II's add() assumes a different
+    // one and rebuilds the matrix.
+    check_petsc(MatAXPY(tangent.petsc_matrix(),
+                        mass_coefficient,
+                        mass.petsc_matrix(),
+                        SUBSET_NONZERO_PATTERN),
+                "MatAXPY");
+    if (with_damping)
+      check_petsc(MatAXPY(tangent.petsc_matrix(),
+                          damping_coefficient,
+                          damping.petsc_matrix(),
+                          SAME_NONZERO_PATTERN),
+                  "MatAXPY");
     return tangent;
   }
 

@@ -345,12 +345,10 @@ namespace DiskImpact
         solve_time_before += solver->triangular_solve_time();
       }
     const auto &integrator = parameters.time_integrator;
-    auto       &A          = op.tangent_reset_to_stiffness();
-    A *= integrator.stiffness_coefficient();
-    A.add(integrator.mass_coefficient(dt), op.mass_matrix());
-    if (op.has_damping())
-      A.add(integrator.damping_coefficient(dt), op.damping_matrix());
-    solver = std::make_unique<CondensedSolver>(
+    auto       &A = op.effective_matrix(integrator.stiffness_coefficient(),
+                                  integrator.mass_coefficient(dt),
+                                  integrator.damping_coefficient(dt));
+    solver        = std::make_unique<CondensedSolver>(
       A,
       op.locally_owned_dofs(),
       communicator,
