@@ -25,12 +25,14 @@ using namespace DiskImpact;
 namespace
 {
   /// The elasticity operator on a half disk (2 refinements, its contact
-  /// zone twice refined), assembled for one material.
+  /// zone twice refined), assembled for one material (Kelvin-Voigt with a
+  /// positive @p relaxation_time).
   struct HalfDiskOperator
   {
     HalfDiskOperator(const unsigned int degree,
                      const PlaneModel   model,
-                     const double       nu)
+                     const double       nu,
+                     const double       relaxation_time = 0.)
         : triangulation(
             MPI_COMM_WORLD,
             dealii::Triangulation<2>::limit_level_difference_at_vertices)
@@ -40,7 +42,7 @@ namespace
       geometry.create_triangulation(triangulation);
       op.setup(triangulation, geometry, true);
       Material material;
-      material.set(model, 1., nu, 1.);
+      material.set(model, 1., nu, 1., relaxation_time);
       op.assemble(material);
     }
     dealii::parallel::distributed::Triangulation<2> triangulation;
@@ -199,6 +201,48 @@ TEST_CASE("condensed solver in 2x2 blocks solves as the scalar one",
   residual = blocked;
   residual.add(-1., scalar);
   CHECK(residual.linfty_norm() <= 1e-10 * scalar.linfty_norm());
+}
+
+TEST_CASE("effective matrix cK K + cM M + cD D from symmetric forms",
+          "[impact][fe]")
+{
+  // A viscous material, so that D is assembled too. The forms are computed
+  // on one triangle of each cell matrix and mirrored: K, M and D must be
+  // symmetric. The effective matrix, summed with PETSc's known-pattern
+  // MatAXPY, must be what deal.II's general sum gives.
+  HalfDiskOperator half_disk_operator(3, PlaneModel::plane_strain, 0.3, 0.02);
+  auto            &op = half_disk_operator.op;
+  REQUIRE(op.has_damping());
+
+  auto x = op.create_vector(), y = op.create_vector(),
+       product = op.create_vector(), reference = op.create_vector();
+  for (const auto i : op.locally_owned_dofs())
+    {
+      x(i) = std::cos(0.37 * i);
+      y(i) = std::sin(0.53 * i + 0.2);
+    }
+  x.compress(dealii::VectorOperation::insert);
+  y.compress(dealii::VectorOperation::insert);
+  for (const auto *matrix :
+       {&op.stiffness_matrix(), &op.mass_matrix(), &op.damping_matrix()})
+    {
+      matrix->vmult(product, x);
+      const double x_y = product * y;
+      matrix->vmult(product, y);
+      CHECK(std::abs(x_y - product * x) <= 1e-13 * std::abs(x_y));
+    }
+
+  const double c_K = 0.5, c_M = 1. / (0.05 * 0.05), c_D = 0.5 / 0.05;
+  dealii::PETScWrappers::MPI::SparseMatrix sum;
+  sum.reinit(op.stiffness_matrix());
+  sum.copy_from(op.stiffness_matrix());
+  sum *= c_K;
+  sum.add(c_M, op.mass_matrix());
+  sum.add(c_D, op.damping_matrix());
+  sum.vmult(reference, x);
+  op.effective_matrix(c_K, c_M, c_D).vmult(product, x);
+  product.add(-1., reference);
+  CHECK(product.linfty_norm() <= 1e-13 * reference.linfty_norm());
 }
 
 TEST_CASE("1-DOF log-law collision against an ODE integration", "[impact]")
