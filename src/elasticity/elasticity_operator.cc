@@ -35,6 +35,15 @@ namespace DiskImpact
       return body == numbers::invalid_material_id ||
              cell->material_id() == body;
     }
+
+    /// Copy the lower triangle of the square @p matrix onto its upper one.
+    void
+    mirror_lower_triangle(FullMatrix<double> &matrix)
+    {
+      for (unsigned int i = 0; i < matrix.m(); ++i)
+        for (unsigned int j = 0; j < i; ++j)
+          matrix(j, i) = matrix(i, j);
+    }
   } // namespace
 
   void
@@ -318,7 +327,8 @@ namespace DiskImpact
           fe_values.reinit(cell);
           cell_mass      = 0.;
           cell_stiffness = 0.;
-          cell_damping   = 0.;
+          if (with_damping)
+            cell_damping = 0.;
           // The three forms are symmetric: the lower triangle, mirrored
           // below.
           for (const unsigned int q : fe_values.quadrature_point_indices())
@@ -356,13 +366,10 @@ namespace DiskImpact
                     }
                 }
             }
-          for (unsigned int i = 0; i < dofs_per_cell; ++i)
-            for (unsigned int j = 0; j < i; ++j)
-              {
-                cell_mass(j, i)      = cell_mass(i, j);
-                cell_stiffness(j, i) = cell_stiffness(i, j);
-                cell_damping(j, i)   = cell_damping(i, j);
-              }
+          mirror_lower_triangle(cell_mass);
+          mirror_lower_triangle(cell_stiffness);
+          if (with_damping)
+            mirror_lower_triangle(cell_damping);
           cell->get_dof_indices(dof_indices);
           redistribute_cell_mass(dof_indices, cell_mass);
           constraints.distribute_local_to_global(cell_mass, dof_indices, mass);
@@ -544,8 +551,7 @@ namespace DiskImpact
                                        const double mass_coefficient,
                                        const double damping_coefficient)
   {
-    tangent.copy_from(stiffness);
-    tangent *= stiffness_coefficient;
+    tangent_reset_to_stiffness() *= stiffness_coefficient;
     // PETSc's sum for a known pattern: deal.II's add() assumes a different
     // one and rebuilds the matrix.
     check_petsc(MatAXPY(tangent.petsc_matrix(),

@@ -345,10 +345,11 @@ namespace DiskImpact
         solve_time_before += solver->triangular_solve_time();
       }
     const auto &integrator = parameters.time_integrator;
-    auto       &A = op.effective_matrix(integrator.stiffness_coefficient(),
-                                  integrator.mass_coefficient(dt),
-                                  integrator.damping_coefficient(dt));
-    solver        = std::make_unique<CondensedSolver>(
+    const auto &A = op.effective_matrix(integrator.stiffness_coefficient(),
+                                        integrator.mass_coefficient(dt),
+                                        integrator.damping_coefficient(dt));
+
+    solver = std::make_unique<CondensedSolver>(
       A,
       op.locally_owned_dofs(),
       communicator,
