@@ -606,11 +606,16 @@ namespace DiskImpact
   }
 
   ImpactSummary
-  Impact::run(const Parameters &parameters,
-              MPI_Comm          communicator,
-              const bool        write_time_series) const
+  Impact::run(const Parameters                &parameters,
+              MPI_Comm                         communicator,
+              const bool                       write_time_series,
+              std::shared_ptr<ImpactOperators> operators) const
   {
-    return ImpactSimulation(parameters, *this, communicator, write_time_series)
+    return ImpactSimulation(parameters,
+                            *this,
+                            communicator,
+                            write_time_series,
+                            std::move(operators))
       .run();
   }
 

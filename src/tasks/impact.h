@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -18,6 +19,7 @@ namespace DiskImpact
 {
   class CsvTable;
   struct Parameters;
+  struct ImpactOperators;
 
   /// What one impact gives (lengths in units of R, velocities of c).
   struct ImpactSummary
@@ -181,10 +183,13 @@ namespace DiskImpact
     static std::string
     units(const Parameters &parameters);
 
+    /// One impact; with @p operators, on those (built for @p parameters
+    /// but perhaps another time step) instead of its own.
     ImpactSummary
-    run(const Parameters &parameters,
-        MPI_Comm          communicator,
-        bool              write_time_series = true) const;
+    run(const Parameters                &parameters,
+        MPI_Comm                         communicator,
+        bool                             write_time_series = true,
+        std::shared_ptr<ImpactOperators> operators         = {}) const;
 
     /// summary.csv with one row.
     static void

@@ -4,6 +4,7 @@
 #include "base/parameters.h"
 #include "base/run_error.h"
 #include "output/csv_table.h"
+#include "tasks/impact_operators.h"
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/utilities.h>
@@ -233,7 +234,8 @@ namespace DiskImpact
   ImpactConvergenceStudy::run_all(const std::vector<StudyRun>   &runs,
                                   const std::vector<Parameters> &points,
                                   MPI_Comm                       communicator,
-                                  std::ostream                  *log)
+                                  std::ostream                  *log,
+                                  SharedOperators               &shared)
   {
     // Shared out among the ranks, the costliest first, each to the rank
     // with the least work so far; every run on its rank alone.
@@ -270,7 +272,19 @@ namespace DiskImpact
       ImpactSummary s;
       try
         {
-          s = points[i].impact.run(points[i], MPI_COMM_SELF, false);
+          // A penalty level has its own mesh level -1: its own operators.
+          const int m = mesh_and_time_level(runs[i]).first;
+          std::shared_ptr<ImpactOperators> operators;
+          if (m >= 0)
+            {
+              auto &kept = shared[m];
+              if (!kept)
+                kept = std::make_shared<ImpactOperators>(points[i],
+                                                         points[i].impact,
+                                                         MPI_COMM_SELF);
+              operators = kept;
+            }
+          s = points[i].impact.run(points[i], MPI_COMM_SELF, false, operators);
         }
       catch (const std::exception &e)
         {
@@ -491,7 +505,8 @@ namespace DiskImpact
               " err.  time\n";
 
     ConvergedEpsilon result;
-    result.runs = run_all(runs, points, communicator, log);
+    SharedOperators  shared;
+    result.runs = run_all(runs, points, communicator, log, shared);
     estimate(result);
     // More runs while the bar exceeds the target (every rank sees the same
     // bar, so all take the same decision).
@@ -504,7 +519,8 @@ namespace DiskImpact
         for (const auto &run : more)
           more_points.push_back(
             refined(parameters, run.factor, run.level, run.time_halvings));
-        const auto finer = run_all(more, more_points, communicator, log);
+        const auto finer =
+          run_all(more, more_points, communicator, log, shared);
         result.runs.insert(result.runs.end(), finer.begin(), finer.end());
         estimate(result);
       }

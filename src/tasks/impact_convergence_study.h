@@ -8,6 +8,8 @@
 #include <mpi.h>
 
 #include <limits>
+#include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -111,13 +113,21 @@ namespace DiskImpact
     estimates_table(const ConvergedEpsilon &result);
 
   private:
+    /// The operators of this rank's runs by mesh level (a degree level
+    /// counts as one): the runs on one mesh differ only in their time step
+    /// (refined()), so they share the mesh and the assembled operators.
+    using SharedOperators = std::map<int, std::shared_ptr<ImpactOperators>>;
+
     /// Run @p points (described by @p runs) on the ranks of
-    /// @p communicator; every rank gets all results.
+    /// @p communicator, each on the operators of its mesh level in
+    /// @p shared (built by the first run on it); every rank gets all
+    /// results.
     static std::vector<StudyRun>
     run_all(const std::vector<StudyRun>   &runs,
             const std::vector<Parameters> &points,
             MPI_Comm                       communicator,
-            std::ostream                  *log);
+            std::ostream                  *log,
+            SharedOperators               &shared);
     /// Each sequence of @p result's runs extrapolated; epsilon and its
     /// error bar from the mesh sequence.
     static void

@@ -104,7 +104,8 @@ namespace DiskImpact
   ImpactSimulation::ImpactSimulation(const Parameters &parameters,
                                      const Impact     &impact,
                                      MPI_Comm          communicator,
-                                     const bool        write_outputs)
+                                     const bool        write_outputs,
+                                     std::shared_ptr<ImpactOperators> operators)
       : parameters(parameters)
       , impact(impact)
       , communicator(communicator)
@@ -116,9 +117,12 @@ namespace DiskImpact
       , mass(parameters.material.density() * parameters.geometry.volume())
       , factor(1. / parameters.geometry.domain_share())
       , force_unit(Impact::force_unit(parameters))
-      , triangulation(communicator,
-                      Triangulation<2>::limit_level_difference_at_vertices)
-      , op(parameters.finite_element.degree)
+      , operators(
+          operators ?
+            std::move(operators) :
+            std::make_shared<ImpactOperators>(parameters, impact, communicator))
+      , op(this->operators->op)
+      , constraint_map(*this->operators->constraint_map)
       , series(time_series_table())
   {
     summary.velocity       = impact.velocity();
@@ -176,42 +180,9 @@ namespace DiskImpact
   void
   ImpactSimulation::setup_operators()
   {
-    const auto  &geometry           = parameters.geometry;
-    const auto  &material           = parameters.material;
-    const double largest_half_width = impact.largest_half_width(parameters);
-    impact.create_mesh(parameters, triangulation);
-    op.setup(triangulation, geometry, true);
-    const bool pair = parameters.partner.is_body();
-    // The candidates for contact: edge points whose undeformed gap is
-    // below the law's reach plus three times the largest approach the
-    // 1-DOF model expects (or the Hertz zone's own gap a^2 / 2R, if
-    // larger).
-    const auto estimate = impact.estimate_collision(parameters);
-    // Two bodies: the penalty k = kappa E / h with the pair's modulus
-    // 1 / E = 1 / E2 + 1 / E2' (the wall's with identical bodies, whose gap
-    // is twice the wall's).
-    const WallLaw law =
-      parameters.contact.wall_law(impact.contact_modulus(parameters),
-                                  ContactOperator::smallest_edge_face(op),
-                                  R);
-    const double bound =
-      law.reach() +
-      3. * std::max(estimate.largest_compression,
-                    largest_half_width * largest_half_width / (2. * R));
-    // No inertia on the edge within the uniformly refined contact zone;
-    // with the constraint, on all the candidates' faces (their undeformed
-    // gap t^2 / 2R is below the bound).
-    if (law.kind == WallLawKind::constraint)
-      op.set_massless_edge_zone(geometry.contact_point(),
-                                1.5 * std::max(largest_half_width,
-                                               std::sqrt(2. * R * bound)));
-    else if (parameters.time_integrator.redistribute_mass())
-      op.set_massless_edge_zone(geometry.contact_point(),
-                                1.5 * largest_half_width);
-    op.assemble(materials());
-    constraint_map = std::make_unique<ConstraintMap>(op.get_constraints(),
-                                                     op.locally_owned_dofs(),
-                                                     communicator);
+    const auto &geometry  = parameters.geometry;
+    const auto &law       = operators->law;
+    const bool  pair      = parameters.partner.is_body();
     summary.massless_dofs = op.n_massless_dofs();
     summary.n_dofs        = op.get_dof_handler().n_dofs();
     // The modes to project on, of the operator the time stepping uses.
@@ -219,10 +190,14 @@ namespace DiskImpact
       projection = std::make_unique<ModalProjection>(
         op,
         geometry,
-        std::pow(material.transverse_wave_speed() / R, 2),
+        std::pow(parameters.material.transverse_wave_speed() / R, 2),
         impact.projected_modes);
-    zone = std::make_unique<ContactZone>(
-      op, parameters.contact.wall(), law, geometry.center(), bound, pair);
+    zone = std::make_unique<ContactZone>(op,
+                                         parameters.contact.wall(),
+                                         law,
+                                         geometry.center(),
+                                         operators->candidate_bound,
+                                         pair);
     if (law.kind == WallLawKind::constraint &&
         parameters.time_integrator.conserves_energy())
       {
@@ -301,7 +276,7 @@ namespace DiskImpact
     // On the condensed matrices, x with its constrained entries zeroed
     // gives the form of the unconstrained field.
     work = x;
-    constraint_map->set_zero(work);
+    constraint_map.set_zero(work);
     matrix.vmult(matrix_x, work);
     return 0.5 * (work * matrix_x);
   }
@@ -313,14 +288,6 @@ namespace DiskImpact
     if (bodies)
       return bodies->center_of_mass(0, x) - bodies->center_of_mass(1, x);
     return (normal_momentum * x) / normal_mass;
-  }
-
-  std::vector<Material>
-  ImpactSimulation::materials() const
-  {
-    if (parameters.partner.is_body())
-      return {parameters.material, parameters.partner.material()};
-    return {parameters.material};
   }
 
   double
@@ -423,7 +390,7 @@ namespace DiskImpact
         u_new = y;
         if (P.size() > 0)
           solver->add_columns(P, u_new);
-        constraint_map->distribute(u_new);
+        constraint_map.distribute(u_new);
         state = zone->constraint_state(point_forces,
                                        point_forces_new,
                                        zone->restrict_to_active(u1_D),
@@ -473,7 +440,7 @@ namespace DiskImpact
     u_new = y;
     if (P.size() > 0)
       solver->add_columns(P, u_new);
-    constraint_map->distribute(u_new);
+    constraint_map.distribute(u_new);
     contact_force             = P;
     const Vector<double> u0_C = zone->restrict_to_active(u_D);
     state                     = zone
@@ -594,7 +561,7 @@ namespace DiskImpact
     // (homogeneous) constraints, so they satisfy them too.
     integrator.update(u, u_new, v, a, dt, v_new, a_new);
     work = u_new;
-    constraint_map->set_zero(work);
+    constraint_map.set_zero(work);
     op.mass_matrix().vmult(mass_u_new, work);
     integrator.update(
       mass_u, mass_u_new, mass_v, mass_a, dt, mass_v_new, mass_a_new);
@@ -644,10 +611,10 @@ namespace DiskImpact
   ImpactSimulation::record(const double time, const ContactState &step)
   {
     work = v;
-    constraint_map->set_zero(work);
+    constraint_map.set_zero(work);
     const double kinetic = 0.5 * factor * (work * mass_v);
     work                 = u;
-    constraint_map->set_zero(work);
+    constraint_map.set_zero(work);
     const double strain = 0.5 * factor * (work * stiffness_u);
     const double v_com  = mean_along_normal(v);
     const double x_com  = mean_along_normal(u) / R;
@@ -730,7 +697,8 @@ namespace DiskImpact
       {
         const auto [flat, revolved] =
           write_deformed_and_revolved_state(op,
-                                            materials(),
+                                            ImpactOperators::materials(
+                                              parameters),
                                             ghosted_u,
                                             parameters.geometry.center(),
                                             R,
@@ -742,10 +710,14 @@ namespace DiskImpact
         revolved_snapshots.emplace_back(time, revolved);
       }
     else
-      snapshots.emplace_back(
-        time,
-        write_deformed_state(
-          op, materials(), ghosted_u, directory, "impact", snapshots.size()));
+      snapshots.emplace_back(time,
+                             write_deformed_state(op,
+                                                  ImpactOperators::materials(
+                                                    parameters),
+                                                  ghosted_u,
+                                                  directory,
+                                                  "impact",
+                                                  snapshots.size()));
   }
 
   void

@@ -10,8 +10,7 @@
 #include "modal/modal_projection.h"
 #include "output/csv_table.h"
 #include "tasks/impact.h"
-
-#include <deal.II/distributed/tria.h>
+#include "tasks/impact_operators.h"
 
 #include <deal.II/lac/petsc_vector.h>
 
@@ -29,15 +28,19 @@ namespace DiskImpact
    * collision, the mesh graded toward the contact, the operators, time
    * stepping with the contact condensed on its DoFs (CondensedSolver), the
    * end of the collision (the step-mean contact force back at zero, seed
-   * 002) plus a margin, and the outputs. Built and run once.
+   * 002) plus a margin, and the outputs. Built and run once; its mesh and
+   * operators may be shared with runs that differ only in the time step.
    */
   class ImpactSimulation
   {
   public:
-    ImpactSimulation(const Parameters &parameters,
-                     const Impact     &impact,
-                     MPI_Comm          communicator,
-                     bool              write_outputs);
+    /// With @p operators built for @p parameters (but perhaps another time
+    /// step), or null to build them here.
+    ImpactSimulation(const Parameters                &parameters,
+                     const Impact                    &impact,
+                     MPI_Comm                         communicator,
+                     bool                             write_outputs,
+                     std::shared_ptr<ImpactOperators> operators = {});
 
     ImpactSummary
     run();
@@ -47,7 +50,8 @@ namespace DiskImpact
     /// 1-DOF log law; beyond its range, seed 001's eq. 61.
     void
     estimate_collision();
-    /// Mesh graded for the largest contact, operators, modes, penalty.
+    /// The contact zone and the solver's other pieces on the operators,
+    /// the modes to project on.
     void
     setup_operators();
     /// Undeformed, moving uniformly toward the wall.
@@ -119,9 +123,6 @@ namespace DiskImpact
     /// velocity v, whose relative centre-of-mass velocity is @p v_com.
     double
     translational_energy(double v_com) const;
-    /// Each body's material, by material id.
-    std::vector<Material>
-    materials() const;
 
     const Parameters &parameters;
     const Impact     &impact;
@@ -135,15 +136,16 @@ namespace DiskImpact
     double        contact_time_estimate = 0.;
     double        approach_estimate     = 0.; ///< largest approach, 1-DOF
 
-    dealii::parallel::distributed::Triangulation<2> triangulation;
-    ElasticityOperator                              op;
-    std::unique_ptr<ContactZone>                    zone;
+    /// The mesh and operators, perhaps shared with other runs.
+    std::shared_ptr<ImpactOperators> operators;
+    ElasticityOperator              &op;
+    /// op's constraints as a matrix, for the time loop.
+    const ConstraintMap         &constraint_map;
+    std::unique_ptr<ContactZone> zone;
     /// Two bodies (a deformable partner): their centre-of-mass motion.
     std::unique_ptr<BodyMotion>      bodies;
     std::unique_ptr<ModalProjection> projection;
     std::unique_ptr<CondensedSolver> solver;
-    /// op's constraints as a matrix, for the time loop.
-    std::unique_ptr<ConstraintMap> constraint_map;
 
     dealii::PETScWrappers::MPI::Vector u, v, a, u_new, v_new, a_new,
       along_normal, normal_momentum, b, y;

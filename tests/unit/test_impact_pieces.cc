@@ -1,7 +1,9 @@
 // Pieces of the impact solver: the condensed solver against the residual of
-// the full nonlinear system, and the 1-DOF log-law collision against
-// an independent ODE integration.
+// the full nonlinear system, the effective matrix, impacts on shared
+// operators against impacts on their own, and the 1-DOF log-law collision
+// against an independent ODE integration.
 
+#include "base/parameters.h"
 #include "body/geometry.h"
 #include "dynamics/condensed_solver.h"
 #include "elasticity/elasticity_operator.h"
@@ -9,6 +11,7 @@
 #include "half_disk.h"
 #include "reference/log_contact_law.h"
 #include "reference/one_dof_impact.h"
+#include "tasks/impact_operators.h"
 
 #include <deal.II/distributed/tria.h>
 
@@ -19,6 +22,7 @@
 
 #include <array>
 #include <cmath>
+#include <memory>
 
 using namespace DiskImpact;
 
@@ -243,6 +247,57 @@ TEST_CASE("effective matrix cK K + cM M + cD D from symmetric forms",
   op.effective_matrix(c_K, c_M, c_D).vmult(product, x);
   product.add(-1., reference);
   CHECK(product.linfty_norm() <= 1e-13 * reference.linfty_norm());
+}
+
+TEST_CASE("impacts on shared operators equal impacts on their own",
+          "[impact][fe]")
+{
+  // A convergence study's runs on one mesh share its operators and differ
+  // in the time step only. Each run writes the effective matrix for its own
+  // step: a run after another one on the same operators must give what it
+  // gives on its own, to rounding.
+  dealii::ParameterHandler prm;
+  Parameters::declare_parameters(prm);
+  prm.parse_input_from_string(R"(
+set Task = impact
+subsection Geometry
+  set Domain = half disk
+end
+subsection Finite element
+  set Degree = 2
+end
+subsection Impact
+  set Velocity                = 0.1
+  set Elements across contact = 4
+  set Mode energies           = 0
+end
+subsection Time stepping
+  set Time step fraction = 0.02
+end
+)");
+  Parameters coarse;
+  coarse.parse_parameters(prm);
+  Parameters fine      = coarse;
+  fine.time_integrator = coarse.time_integrator.with_time_step_scaled(0.5);
+
+  const auto own_coarse = coarse.impact.run(coarse, MPI_COMM_SELF, false);
+  const auto own_fine   = fine.impact.run(fine, MPI_COMM_SELF, false);
+  REQUIRE(own_fine.steps > own_coarse.steps);
+
+  const auto shared =
+    std::make_shared<ImpactOperators>(coarse, coarse.impact, MPI_COMM_SELF);
+  for (const auto *run : {&coarse, &fine, &coarse})
+    {
+      const auto &own = run == &fine ? own_fine : own_coarse;
+      const auto  on_shared =
+        run->impact.run(*run, MPI_COMM_SELF, false, shared);
+      CAPTURE(run == &fine);
+      CHECK(on_shared.steps == own.steps);
+      CHECK(on_shared.n_dofs == own.n_dofs);
+      CHECK(std::abs(on_shared.epsilon - own.epsilon) <= 1e-13);
+      CHECK(std::abs(on_shared.contact_time - own.contact_time) <=
+            1e-13 * own.contact_time);
+    }
 }
 
 TEST_CASE("1-DOF log-law collision against an ODE integration", "[impact]")

@@ -1,0 +1,63 @@
+#include "tasks/impact_operators.h"
+
+#include "base/parameters.h"
+#include "contact/contact_operator.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace DiskImpact
+{
+  using namespace dealii;
+
+  ImpactOperators::ImpactOperators(const Parameters &parameters,
+                                   const Impact     &impact,
+                                   MPI_Comm          communicator)
+      : triangulation(communicator,
+                      Triangulation<2>::limit_level_difference_at_vertices)
+      , op(parameters.finite_element.degree)
+  {
+    const auto  &geometry           = parameters.geometry;
+    const double R                  = geometry.radius();
+    const double largest_half_width = impact.largest_half_width(parameters);
+    impact.create_mesh(parameters, triangulation);
+    op.setup(triangulation, geometry, true);
+    // Two bodies: the penalty k = kappa E / h with the pair's modulus
+    // 1 / E = 1 / E2 + 1 / E2' (the wall's with identical bodies, whose gap
+    // is twice the wall's).
+    law = parameters.contact.wall_law(impact.contact_modulus(parameters),
+                                      ContactOperator::smallest_edge_face(op),
+                                      R);
+    // The candidates: edge points whose undeformed gap is below the law's
+    // reach plus three times the largest approach the 1-DOF model expects
+    // (or the Hertz zone's own gap a^2 / 2R, if larger).
+    const auto estimate = impact.estimate_collision(parameters);
+    candidate_bound =
+      law.reach() +
+      3. * std::max(estimate.largest_compression,
+                    largest_half_width * largest_half_width / (2. * R));
+    // No inertia on the edge within the uniformly refined contact zone;
+    // with the constraint, on all the candidates' faces (their undeformed
+    // gap t^2 / 2R is below the bound).
+    if (law.kind == WallLawKind::constraint)
+      op.set_massless_edge_zone(geometry.contact_point(),
+                                1.5 * std::max(largest_half_width,
+                                               std::sqrt(2. * R *
+                                                         candidate_bound)));
+    else if (parameters.time_integrator.redistribute_mass())
+      op.set_massless_edge_zone(geometry.contact_point(),
+                                1.5 * largest_half_width);
+    op.assemble(materials(parameters));
+    constraint_map = std::make_unique<ConstraintMap>(op.get_constraints(),
+                                                     op.locally_owned_dofs(),
+                                                     communicator);
+  }
+
+  std::vector<Material>
+  ImpactOperators::materials(const Parameters &parameters)
+  {
+    if (parameters.partner.is_body())
+      return {parameters.material, parameters.partner.material()};
+    return {parameters.material};
+  }
+} // namespace DiskImpact

@@ -1,0 +1,51 @@
+#pragma once
+
+#include "contact/contact.h"
+#include "elasticity/constraint_map.h"
+#include "elasticity/elasticity_operator.h"
+#include "elasticity/material.h"
+
+#include <deal.II/distributed/tria.h>
+
+#include <mpi.h>
+
+#include <memory>
+#include <vector>
+
+namespace DiskImpact
+{
+  struct Parameters;
+  class Impact;
+
+  /**
+   * The part of an impact's set-up that does not depend on the time step:
+   * the mesh graded toward the contact, the assembled mass, stiffness (and
+   * damping) operators with their massless edge zone, the constraints as a
+   * matrix, the wall law and the bound on the contact candidates' gap. The
+   * runs of a convergence study that differ only in their time step share
+   * one (docs/impact-convergence.md, "The set-up of a run"); the time
+   * stepping only reads it, besides the effective matrix, which each
+   * factorization writes afresh.
+   */
+  struct ImpactOperators
+  {
+    /// Build and assemble on @p communicator. Collective.
+    ImpactOperators(const Parameters &parameters,
+                    const Impact     &impact,
+                    MPI_Comm          communicator);
+
+    /// Each body's material, by material id.
+    static std::vector<Material>
+    materials(const Parameters &parameters);
+
+    dealii::parallel::distributed::Triangulation<2> triangulation;
+    ElasticityOperator                              op;
+    /// op's constraints as a matrix, for the time loop.
+    std::unique_ptr<ConstraintMap> constraint_map;
+    /// The wall's law, its penalty from the smallest edge face.
+    WallLaw law;
+    /// The candidates for contact: the edge points whose undeformed gap is
+    /// below this bound.
+    double candidate_bound = 0.;
+  };
+} // namespace DiskImpact
