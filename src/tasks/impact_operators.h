@@ -23,7 +23,7 @@ namespace DiskImpact
    * damping) operators with their massless edge zone, the constraints as a
    * matrix, the wall law and the bound on the contact candidates' gap. The
    * runs of a convergence study that differ only in their time step share
-   * one (docs/impact-convergence.md, "The set-up of a run"); the time
+   * one (docs/impact-convergence.md, "Runs on one mesh share it"); the time
    * stepping only reads it, besides the effective matrix, which each
    * factorization writes afresh.
    */
