@@ -3,6 +3,7 @@
 #include "contact/contact.h"
 #include "elasticity/constraint_map.h"
 #include "elasticity/elasticity_operator.h"
+#include "elasticity/interleaved_mass.h"
 #include "elasticity/material.h"
 
 #include <deal.II/distributed/tria.h>
@@ -42,6 +43,8 @@ namespace DiskImpact
     ElasticityOperator                              op;
     /// op's constraints as a matrix, for the time loop.
     std::unique_ptr<ConstraintMap> constraint_map;
+    /// The product with op's mass matrix, for the time loop.
+    std::unique_ptr<InterleavedMass> mass_product;
     /// The wall's law, its penalty from the smallest edge face.
     WallLaw law;
     /// The candidates for contact: the edge points whose undeformed gap is

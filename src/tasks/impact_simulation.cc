@@ -562,7 +562,7 @@ namespace DiskImpact
     integrator.update(u, u_new, v, a, dt, v_new, a_new);
     work = u_new;
     constraint_map.set_zero(work);
-    op.mass_matrix().vmult(mass_u_new, work);
+    operators->mass_product->vmult(mass_u_new, work);
     integrator.update(
       mass_u, mass_u_new, mass_v, mass_a, dt, mass_v_new, mass_a_new);
     update_stiffness_image();

@@ -1,0 +1,169 @@
+#include "elasticity/interleaved_mass.h"
+
+#include "base/petsc_check.h"
+
+#include <deal.II/base/mpi.h>
+
+#include <cmath>
+#include <map>
+#include <vector>
+
+namespace DiskImpact
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /// Row @p row of @p matrix as (column, value) pairs.
+    std::vector<std::pair<PetscInt, PetscScalar>>
+    matrix_row(const Mat matrix, const PetscInt row)
+    {
+      PetscInt           n;
+      const PetscInt    *columns;
+      const PetscScalar *values;
+      check_petsc(MatGetRow(matrix, row, &n, &columns, &values), "MatGetRow");
+      std::vector<std::pair<PetscInt, PetscScalar>> entries(n);
+      for (PetscInt k = 0; k < n; ++k)
+        entries[k] = {columns[k], values[k]};
+      check_petsc(MatRestoreRow(matrix, row, &n, &columns, &values),
+                  "MatRestoreRow");
+      return entries;
+    }
+  } // namespace
+
+  InterleavedMass::InterleavedMass(const PETScWrappers::MPI::SparseMatrix &mass,
+                                   const AffineConstraints<double> &constraints)
+      : mass(mass)
+      , mask(mass.locally_owned_range_indices(), mass.get_mpi_communicator())
+  {
+    for (const auto i : mass.locally_owned_range_indices())
+      if (!constraints.is_constrained(i))
+        mask(i) = 1.;
+    mask.compress(VectorOperation::insert);
+    std::vector<std::map<PetscInt, PetscScalar>> rows;
+    const bool whole = scalar_rows(constraints, rows);
+    // All ranks take the same product (creating m and the product are
+    // collective).
+    if (Utilities::MPI::min(whole ? 1 : 0, mass.get_mpi_communicator()) == 1)
+      create_scalar_matrix(rows);
+  }
+
+  InterleavedMass::~InterleavedMass()
+  {
+    if (both_components != nullptr)
+      MatDestroy(&both_components);
+    if (scalar_mass != nullptr)
+      MatDestroy(&scalar_mass);
+  }
+
+  bool
+  InterleavedMass::scalar_rows(
+    const AffineConstraints<double>              &constraints,
+    std::vector<std::map<PetscInt, PetscScalar>> &rows) const
+  {
+    PetscInt start, end, n;
+    check_petsc(MatGetOwnershipRange(mass, &start, &end),
+                "MatGetOwnershipRange");
+    check_petsc(MatGetSize(mass, &n, nullptr), "MatGetSize");
+    if (start % 2 != 0 || end % 2 != 0 || n % 2 != 0)
+      return false;
+    // Row p of m: the x row's entries at unconstrained x columns and the y
+    // row's at unconstrained y columns, which must agree where both exist
+    // (to rounding: the assembled entries are an ulp apart in places).
+    rows.resize((end - start) / 2);
+    for (PetscInt p = start / 2; p < end / 2; ++p)
+      for (unsigned int component = 0; component < 2; ++component)
+        {
+          const PetscInt row             = 2 * p + component;
+          const bool     row_constrained = constraints.is_constrained(row);
+          for (const auto &[column, value] : matrix_row(mass, row))
+            {
+              // An entry that couples x with y (a constrained row's own
+              // diagonal aside) breaks the structure.
+              if (column % 2 != static_cast<PetscInt>(component))
+                return false;
+              if (row_constrained || constraints.is_constrained(column))
+                continue;
+              const auto [entry, inserted] =
+                rows[p - start / 2].emplace(column / 2, value);
+              if (!inserted &&
+                  std::abs(entry->second - value) > 1e-12 * std::abs(value))
+                return false;
+            }
+        }
+    return true;
+  }
+
+  void
+  InterleavedMass::create_scalar_matrix(
+    const std::vector<std::map<PetscInt, PetscScalar>> &rows)
+  {
+    PetscInt start, end, n;
+    check_petsc(MatGetOwnershipRange(mass, &start, &end),
+                "MatGetOwnershipRange");
+    check_petsc(MatGetSize(mass, &n, nullptr), "MatGetSize");
+    const PetscInt        first = start / 2, last = end / 2;
+    std::vector<PetscInt> diagonal_counts(rows.size()),
+      off_diagonal_counts(rows.size());
+    for (unsigned int r = 0; r < rows.size(); ++r)
+      for (const auto &entry : rows[r])
+        ++(entry.first >= first && entry.first < last ? diagonal_counts[r] :
+                                                        off_diagonal_counts[r]);
+    check_petsc(MatCreateAIJ(mass.get_mpi_communicator(),
+                             last - first,
+                             last - first,
+                             n / 2,
+                             n / 2,
+                             0,
+                             diagonal_counts.data(),
+                             0,
+                             off_diagonal_counts.data(),
+                             &scalar_mass),
+                "MatCreateAIJ");
+    for (unsigned int r = 0; r < rows.size(); ++r)
+      {
+        const PetscInt           row = first + r;
+        std::vector<PetscInt>    columns;
+        std::vector<PetscScalar> values;
+        for (const auto &[column, value] : rows[r])
+          {
+            columns.push_back(column);
+            values.push_back(value);
+          }
+        check_petsc(MatSetValues(scalar_mass,
+                                 1,
+                                 &row,
+                                 columns.size(),
+                                 columns.data(),
+                                 values.data(),
+                                 INSERT_VALUES),
+                    "MatSetValues");
+      }
+    check_petsc(MatAssemblyBegin(scalar_mass, MAT_FINAL_ASSEMBLY),
+                "MatAssemblyBegin");
+    check_petsc(MatAssemblyEnd(scalar_mass, MAT_FINAL_ASSEMBLY),
+                "MatAssemblyEnd");
+    check_petsc(MatCreateMAIJ(scalar_mass, 2, &both_components),
+                "MatCreateMAIJ");
+  }
+
+  bool
+  InterleavedMass::scalar() const
+  {
+    return both_components != nullptr;
+  }
+
+  void
+  InterleavedMass::vmult(PETScWrappers::MPI::Vector       &y,
+                         const PETScWrappers::MPI::Vector &x) const
+  {
+    if (!scalar())
+      {
+        mass.vmult(y, x);
+        return;
+      }
+    check_petsc(MatMult(both_components, x, y), "MatMult");
+    // M's constrained rows hold their diagonal alone, and x is zero there.
+    check_petsc(VecPointwiseMult(y, y, mask), "VecPointwiseMult");
+  }
+} // namespace DiskImpact

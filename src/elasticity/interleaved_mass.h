@@ -1,0 +1,70 @@
+#pragma once
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/petsc_sparse_matrix.h>
+#include <deal.II/lac/petsc_vector.h>
+
+#include <petscmat.h>
+
+#include <map>
+#include <vector>
+
+namespace DiskImpact
+{
+  /**
+   * The product with the mass matrix M of a field whose constrained entries
+   * are zero, for the time loop. The mass form couples equal components
+   * only, with the same scalar weights for both: on the unconstrained rows
+   * and columns M = m ⊗ I2, with the DoFs of each support point numbered
+   * together (x, y). So one scalar matrix m, applied to both components at
+   * once by PETSc's MAIJ format, reads half the entries and indices that M
+   * does (docs/impact-convergence.md, "The product with M").
+   *
+   * m is read off M itself, and only if M has that structure exactly (the
+   * x-x and y-y entries equal to rounding where both are unconstrained, no
+   * entry that couples x with y, every rank's rows whole points); else the
+   * product is M's own.
+   */
+  class InterleavedMass
+  {
+  public:
+    /// From the assembled @p mass with its @p constraints. Collective.
+    InterleavedMass(const dealii::PETScWrappers::MPI::SparseMatrix &mass,
+                    const dealii::AffineConstraints<double> &constraints);
+
+    ~InterleavedMass();
+
+    InterleavedMass(const InterleavedMass &) = delete;
+    InterleavedMass &
+    operator=(const InterleavedMass &) = delete;
+
+    /// Whether the product uses the scalar matrix (else M's own).
+    bool
+    scalar() const;
+
+    /// @p y = M @p x, for @p x zero on the constrained DoFs; @p y is zero
+    /// there.
+    void
+    vmult(dealii::PETScWrappers::MPI::Vector       &y,
+          const dealii::PETScWrappers::MPI::Vector &x) const;
+
+  private:
+    /// This rank's rows of m from M's, if M = m ⊗ I2 on its unconstrained
+    /// DoFs: whether it is.
+    bool
+    scalar_rows(const dealii::AffineConstraints<double>      &constraints,
+                std::vector<std::map<PetscInt, PetscScalar>> &rows) const;
+
+    /// m from this rank's @p rows and its product with both components.
+    /// Collective.
+    void
+    create_scalar_matrix(
+      const std::vector<std::map<PetscInt, PetscScalar>> &rows);
+
+    const dealii::PETScWrappers::MPI::SparseMatrix &mass;
+    Mat                                             scalar_mass     = nullptr;
+    Mat                                             both_components = nullptr;
+    /// 1 on the unconstrained DoFs, 0 on the constrained ones.
+    dealii::PETScWrappers::MPI::Vector mask;
+  };
+} // namespace DiskImpact
