@@ -159,8 +159,7 @@ namespace DiskImpact
                                  VectorType       &w) const
   {
     const double cm = mass_coefficient(dt);
-    w               = u0;
-    w *= cm;
+    w.equ(cm, u0);
     w.add(cm * dt, v0, cm * dt * dt * (0.5 - beta) - alpha_m, a0);
   }
 
@@ -203,10 +202,10 @@ namespace DiskImpact
                          VectorType       &v1,
                          VectorType       &a1) const
   {
-    a1 = u1;
-    a1.add(-1., u0, -dt, v0);
-    a1.add(-dt * dt * (0.5 - beta), a0);
-    a1 *= 1. / (beta * dt * dt);
+    const double k = 1. / (beta * dt * dt);
+    a1.equ(k, u1);
+    a1.add(-k, u0, -k * dt, v0);
+    a1.add(-k * dt * dt * (0.5 - beta), a0);
     v1 = v0;
     v1.add(dt * (1. - gamma), a0, dt * gamma, a1);
   }

@@ -48,14 +48,20 @@ namespace DiskImpact
   void
   ConstraintMap::distribute(PETScWrappers::MPI::Vector &x) const
   {
-    map.vmult(mapped, x);
-    mapped += inhomogeneity;
-    x.swap(mapped);
+    check_petsc(MatMultAdd(map, x, inhomogeneity, mapped), "MatMultAdd");
+    check_petsc(VecCopy(mapped, x), "VecCopy");
   }
 
   void
   ConstraintMap::set_zero(PETScWrappers::MPI::Vector &x) const
   {
     check_petsc(VecPointwiseMult(x, x, mask), "VecPointwiseMult");
+  }
+
+  void
+  ConstraintMap::zeroed(const PETScWrappers::MPI::Vector &x,
+                        PETScWrappers::MPI::Vector       &result) const
+  {
+    check_petsc(VecPointwiseMult(result, x, mask), "VecPointwiseMult");
   }
 } // namespace DiskImpact

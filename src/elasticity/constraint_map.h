@@ -18,7 +18,8 @@ namespace DiskImpact
    *    line on its row, g the inhomogeneities; one product, in place of
    *    AffineConstraints::distribute(), which reads and writes a PETSc
    *    vector entry by entry;
-   *  - set_zero(): x <- x .* m, m zero on the constrained DoFs.
+   *  - set_zero(): x <- x .* m, m zero on the constrained DoFs (zeroed():
+   *    into another vector).
    * Same results as the AffineConstraints it is built from (closed, so a
    * line holds only unconstrained DoFs).
    */
@@ -38,6 +39,11 @@ namespace DiskImpact
     /// The constrained entries of @p x set to zero.
     void
     set_zero(dealii::PETScWrappers::MPI::Vector &x) const;
+
+    /// @p result = @p x with its constrained entries zero (one pass).
+    void
+    zeroed(const dealii::PETScWrappers::MPI::Vector &x,
+           dealii::PETScWrappers::MPI::Vector       &result) const;
 
   private:
     dealii::PETScWrappers::MPI::SparseMatrix   map;

@@ -213,22 +213,22 @@ namespace DiskImpact
   void
   ImpactSimulation::set_initial_state()
   {
-    for (auto *x : {&u,
-                    &v,
-                    &a,
-                    &u_new,
-                    &v_new,
-                    &a_new,
-                    &along_normal,
-                    &b,
-                    &y,
-                    &stiffness_u,
-                    &mass_u,
-                    &mass_v,
-                    &mass_a,
-                    &mass_u_new,
-                    &mass_v_new,
-                    &mass_a_new})
+    for (PETScWrappers::MPI::Vector *x :
+         std::initializer_list<PETScWrappers::MPI::Vector *>{&u,
+                                                             &v,
+                                                             &a,
+                                                             &u_new,
+                                                             &v_new,
+                                                             &a_new,
+                                                             &along_normal,
+                                                             &b,
+                                                             &stiffness_u,
+                                                             &mass_u,
+                                                             &mass_v,
+                                                             &mass_a,
+                                                             &mass_u_new,
+                                                             &mass_v_new,
+                                                             &mass_a_new})
       *x = op.create_vector();
     u_D.reinit(zone->candidate_dofs().size());
     point_forces.reinit(zone->n_points());
@@ -275,8 +275,7 @@ namespace DiskImpact
   {
     // On the condensed matrices, x with its constrained entries zeroed
     // gives the form of the unconstrained field.
-    work = x;
-    constraint_map.set_zero(work);
+    constraint_map.zeroed(x, work);
     matrix.vmult(matrix_x, work);
     return 0.5 * (work * matrix_x);
   }
@@ -333,20 +332,23 @@ namespace DiskImpact
     // v0, a0 and K u0 from update_stiffness_image(). (They differ from M w and
     // K u0 in the constrained rows only, which the solve keeps to themselves
     // and distribute() overwrites.)
-    integrator.inertia_vector(mass_u, mass_v, mass_a, dt, b);
+    integrator.inertia_vector<PETScWrappers::MPI::Vector>(
+      mass_u, mass_v, mass_a, dt, b);
     b.add(-integrator.old_stiffness_weight(), stiffness_u);
     if (op.has_damping())
       {
-        integrator.damping_vector(u, v, a, dt, work);
+        integrator.damping_vector<PETScWrappers::MPI::Vector>(
+          u, v, a, dt, work);
         op.damping_matrix().vmult(product, work);
         b.add(-1., product);
       }
-    // The response without contact force: one solve with the factorized
-    // matrix. The end state is y + X P(u1_C): a dense system on C.
-    solver->solve(b, y);
+    // The response without contact force y: one solve with the factorized
+    // matrix, into u_new. The end state is y + X P(u1_C): a dense system
+    // on C.
+    solver->solve(b, u_new);
     // The candidates' DoFs are unconstrained (ConstrainedRow), so y needs
     // its constraints distributed only as part of the end state below.
-    const Vector<double> y_D  = solver->observe(y);
+    const Vector<double> y_D  = solver->observe(u_new);
     Vector<double>       u1_D = y_D;
     Vector<double>       P;
     if (parameters.contact.law_kind() == WallLawKind::constraint)
@@ -384,10 +386,9 @@ namespace DiskImpact
           }
         if (applied.linfty_norm() > 0.)
           {
-            solver->add_columns(zone->constraint_force(applied), y);
-            massless->add_response(point_rows, applied, -2., y);
+            solver->add_columns(zone->constraint_force(applied), u_new);
+            massless->add_response(point_rows, applied, -2., u_new);
           }
-        u_new = y;
         if (P.size() > 0)
           solver->add_columns(P, u_new);
         constraint_map.distribute(u_new);
@@ -437,7 +438,6 @@ namespace DiskImpact
         if (zone->dofs_to_activate({&u1_D}).empty())
           break;
       }
-    u_new = y;
     if (P.size() > 0)
       solver->add_columns(P, u_new);
     constraint_map.distribute(u_new);
@@ -559,27 +559,27 @@ namespace DiskImpact
       }
     // v_new and a_new are linear combinations of fields that satisfy the
     // (homogeneous) constraints, so they satisfy them too.
-    integrator.update(u, u_new, v, a, dt, v_new, a_new);
-    work = u_new;
-    constraint_map.set_zero(work);
+    integrator.update<PETScWrappers::MPI::Vector>(
+      u, u_new, v, a, dt, v_new, a_new);
+    constraint_map.zeroed(u_new, work);
     operators->mass_product->vmult(mass_u_new, work);
-    integrator.update(
+    integrator.update<PETScWrappers::MPI::Vector>(
       mass_u, mass_u_new, mass_v, mass_a, dt, mass_v_new, mass_a_new);
     update_stiffness_image();
     impulse += dt * factor * state.force_average;
     if (op.has_damping())
       {
         // the step's viscous work, dt v^T D v at the damping's velocity
-        integrator.damping_velocity(v, v_new, work);
+        integrator.damping_velocity<PETScWrappers::MPI::Vector>(v, v_new, work);
         dissipated +=
           2. * dt * factor * quadratic_form(op.damping_matrix(), work);
       }
-    u.swap(u_new);
-    v.swap(v_new);
-    a.swap(a_new);
-    mass_u.swap(mass_u_new);
-    mass_v.swap(mass_v_new);
-    mass_a.swap(mass_a_new);
+    u.exchange(u_new);
+    v.exchange(v_new);
+    a.exchange(a_new);
+    mass_u.exchange(mass_u_new);
+    mass_v.exchange(mass_v_new);
+    mass_a.exchange(mass_a_new);
     u_D = u1_D_new;
     point_forces.swap(point_forces_new);
     t += dt;
@@ -610,11 +610,9 @@ namespace DiskImpact
   void
   ImpactSimulation::record(const double time, const ContactState &step)
   {
-    work = v;
-    constraint_map.set_zero(work);
+    constraint_map.zeroed(v, work);
     const double kinetic = 0.5 * factor * (work * mass_v);
-    work                 = u;
-    constraint_map.set_zero(work);
+    constraint_map.zeroed(u, work);
     const double strain = 0.5 * factor * (work * stiffness_u);
     const double v_com  = mean_along_normal(v);
     const double x_com  = mean_along_normal(u) / R;

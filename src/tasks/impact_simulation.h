@@ -5,6 +5,7 @@
 #include "contact/contact_zone.h"
 #include "dynamics/condensed_solver.h"
 #include "dynamics/massless_zone.h"
+#include "dynamics/state_vector.h"
 #include "elasticity/constraint_map.h"
 #include "elasticity/elasticity_operator.h"
 #include "modal/modal_projection.h"
@@ -147,8 +148,8 @@ namespace DiskImpact
     std::unique_ptr<ModalProjection> projection;
     std::unique_ptr<CondensedSolver> solver;
 
-    dealii::PETScWrappers::MPI::Vector u, v, a, u_new, v_new, a_new,
-      along_normal, normal_momentum, b, y;
+    StateVector                        u, v, a, u_new, v_new, a_new;
+    dealii::PETScWrappers::MPI::Vector along_normal, normal_momentum, b;
     /// K u of the current state (advance()): for the strain energy and the
     /// next step's right-hand side.
     dealii::PETScWrappers::MPI::Vector stiffness_u;
@@ -157,8 +158,7 @@ namespace DiskImpact
     /// M u, M v, M a (constrained entries zeroed) and their new values:
     /// the Newmark relations are linear, so M v and M a follow from M u
     /// by the same relations, one product with M per step.
-    dealii::PETScWrappers::MPI::Vector mass_u, mass_v, mass_a, mass_u_new,
-      mass_v_new, mass_a_new;
+    StateVector mass_u, mass_v, mass_a, mass_u_new, mass_v_new, mass_a_new;
     /// u on the contact candidates' DoFs, at the step's start and end.
     dealii::Vector<double> u_D, u1_D_new;
     /// Law 'constraint': the point forces at the step's start and end.
