@@ -32,14 +32,11 @@ namespace DiskImpact
   } // namespace
 
   InterleavedMass::InterleavedMass(const PETScWrappers::MPI::SparseMatrix &mass,
-                                   const AffineConstraints<double> &constraints)
+                                   const AffineConstraints<double> &constraints,
+                                   const ConstraintMap &constraint_map)
       : mass(mass)
-      , mask(mass.locally_owned_range_indices(), mass.get_mpi_communicator())
+      , constraint_map(constraint_map)
   {
-    for (const auto i : mass.locally_owned_range_indices())
-      if (!constraints.is_constrained(i))
-        mask(i) = 1.;
-    mask.compress(VectorOperation::insert);
     std::vector<std::map<PetscInt, PetscScalar>> rows;
     const bool whole = scalar_rows(constraints, rows);
     // All ranks take the same product (creating m and the product are
@@ -164,6 +161,6 @@ namespace DiskImpact
       }
     check_petsc(MatMult(both_components, x, y), "MatMult");
     // M's constrained rows hold their diagonal alone, and x is zero there.
-    check_petsc(VecPointwiseMult(y, y, mask), "VecPointwiseMult");
+    constraint_map.set_zero(y);
   }
 } // namespace DiskImpact

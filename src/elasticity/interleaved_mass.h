@@ -1,5 +1,7 @@
 #pragma once
 
+#include "elasticity/constraint_map.h"
+
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/petsc_sparse_matrix.h>
 #include <deal.II/lac/petsc_vector.h>
@@ -28,9 +30,11 @@ namespace DiskImpact
   class InterleavedMass
   {
   public:
-    /// From the assembled @p mass with its @p constraints. Collective.
+    /// From the assembled @p mass with its @p constraints, which
+    /// @p constraint_map holds as a matrix. Collective.
     InterleavedMass(const dealii::PETScWrappers::MPI::SparseMatrix &mass,
-                    const dealii::AffineConstraints<double> &constraints);
+                    const dealii::AffineConstraints<double>        &constraints,
+                    const ConstraintMap &constraint_map);
 
     ~InterleavedMass();
 
@@ -64,7 +68,7 @@ namespace DiskImpact
     const dealii::PETScWrappers::MPI::SparseMatrix &mass;
     Mat                                             scalar_mass     = nullptr;
     Mat                                             both_components = nullptr;
-    /// 1 on the unconstrained DoFs, 0 on the constrained ones.
-    dealii::PETScWrappers::MPI::Vector mask;
+    /// Zeroes the product's constrained entries.
+    const ConstraintMap &constraint_map;
   };
 } // namespace DiskImpact

@@ -51,8 +51,9 @@ namespace DiskImpact
     constraint_map = std::make_unique<ConstraintMap>(op.get_constraints(),
                                                      op.locally_owned_dofs(),
                                                      communicator);
-    mass_product =
-      std::make_unique<InterleavedMass>(op.mass_matrix(), op.get_constraints());
+    mass_product   = std::make_unique<InterleavedMass>(op.mass_matrix(),
+                                                     op.get_constraints(),
+                                                     *constraint_map);
   }
 
   std::vector<Material>

@@ -3,6 +3,7 @@
 // disks with a symmetry plane.
 
 #include "body/geometry.h"
+#include "elasticity/constraint_map.h"
 #include "elasticity/elasticity_operator.h"
 #include "elasticity/interleaved_mass.h"
 #include "elasticity/material.h"
@@ -85,7 +86,10 @@ TEST_CASE("the mass product through one scalar matrix equals M's", "[fe]")
       const auto             &op          = assembled.op;
       const auto             &constraints = op.get_constraints();
       REQUIRE(constraints.n_constraints() > 4);
-      const InterleavedMass product(op.mass_matrix(), constraints);
+      const ConstraintMap   map(constraints,
+                              op.locally_owned_dofs(),
+                              MPI_COMM_WORLD);
+      const InterleavedMass product(op.mass_matrix(), constraints, map);
       REQUIRE(product.scalar());
 
       const auto x        = test_field(op);
@@ -110,9 +114,12 @@ TEST_CASE("a matrix that is not m ⊗ I2 keeps its own product", "[fe]")
   const AssembledOperator assembled(half_disk(2), 3, 0.2);
   const auto             &op = assembled.op;
   const auto              x  = test_field(op);
+  const ConstraintMap     map(op.get_constraints(),
+                          op.locally_owned_dofs(),
+                          MPI_COMM_WORLD);
   for (const auto *matrix : {&op.mass_matrix(), &op.stiffness_matrix()})
     {
-      const InterleavedMass product(*matrix, op.get_constraints());
+      const InterleavedMass product(*matrix, op.get_constraints(), map);
       CHECK_FALSE(product.scalar());
       auto expected = op.create_vector(), y = op.create_vector();
       matrix->vmult(expected, x);
