@@ -26,9 +26,10 @@ namespace DiskImpact
     mapping = std::make_unique<MappingQ<2>>(fe_degree);
     dof_handler.reinit(triangulation);
     dof_handler.distribute_dofs(fe);
-    DoFRenumbering::Cuthill_McKee(dof_handler);
     // The components of each support point next to each other: the
-    // matrices are then made of dense blocks (used by CondensedSolver).
+    // matrices are then made of dense blocks (used by CondensedSolver and
+    // InterleavedMass). The points stay in the order of the cells; the
+    // direct solvers choose their own fill-reducing order.
     if (fe.n_components() > 1)
       DoFRenumbering::support_point_wise(dof_handler);
     owned_dofs = dof_handler.locally_owned_dofs();

@@ -4,32 +4,13 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <algorithm>
 #include <cmath>
-#include <map>
 #include <vector>
 
 namespace DiskImpact
 {
   using namespace dealii;
-
-  namespace
-  {
-    /// Row @p row of @p matrix as (column, value) pairs.
-    std::vector<std::pair<PetscInt, PetscScalar>>
-    matrix_row(const Mat matrix, const PetscInt row)
-    {
-      PetscInt           n;
-      const PetscInt    *columns;
-      const PetscScalar *values;
-      check_petsc(MatGetRow(matrix, row, &n, &columns, &values), "MatGetRow");
-      std::vector<std::pair<PetscInt, PetscScalar>> entries(n);
-      for (PetscInt k = 0; k < n; ++k)
-        entries[k] = {columns[k], values[k]};
-      check_petsc(MatRestoreRow(matrix, row, &n, &columns, &values),
-                  "MatRestoreRow");
-      return entries;
-    }
-  } // namespace
 
   InterleavedMass::InterleavedMass(const PETScWrappers::MPI::SparseMatrix &mass,
                                    const AffineConstraints<double> &constraints,
@@ -37,7 +18,7 @@ namespace DiskImpact
       : mass(mass)
       , constraint_map(constraint_map)
   {
-    std::vector<std::map<PetscInt, PetscScalar>> rows;
+    ScalarRows rows;
     const bool whole = scalar_rows(constraints, rows);
     // All ranks take the same product (creating m and the product are
     // collective).
@@ -54,9 +35,8 @@ namespace DiskImpact
   }
 
   bool
-  InterleavedMass::scalar_rows(
-    const AffineConstraints<double>              &constraints,
-    std::vector<std::map<PetscInt, PetscScalar>> &rows) const
+  InterleavedMass::scalar_rows(const AffineConstraints<double> &constraints,
+                               ScalarRows                      &rows) const
   {
     PetscInt start, end, n;
     check_petsc(MatGetOwnershipRange(mass, &start, &end),
@@ -67,33 +47,68 @@ namespace DiskImpact
     // Row p of m: the x row's entries at unconstrained x columns and the y
     // row's at unconstrained y columns, which must agree where both exist
     // (to rounding: the assembled entries are an ulp apart in places).
+    // Both rows' columns are sorted, so their scalar columns are too.
     rows.resize((end - start) / 2);
+    std::vector<std::pair<PetscInt, PetscScalar>> component_row[2];
     for (PetscInt p = start / 2; p < end / 2; ++p)
-      for (unsigned int component = 0; component < 2; ++component)
+      {
+        for (unsigned int component = 0; component < 2; ++component)
+          {
+            const PetscInt row     = 2 * p + component;
+            auto          &entries = component_row[component];
+            entries.clear();
+            PetscInt           n_entries;
+            const PetscInt    *columns;
+            const PetscScalar *values;
+            check_petsc(MatGetRow(mass, row, &n_entries, &columns, &values),
+                        "MatGetRow");
+            bool coupled = false;
+            for (PetscInt k = 0; k < n_entries; ++k)
+              {
+                // An entry that couples x with y (a constrained row's own
+                // diagonal aside) breaks the structure.
+                coupled = coupled || columns[k] % 2 != PetscInt(component);
+                if (!constraints.is_constrained(row) &&
+                    !constraints.is_constrained(columns[k]))
+                  entries.emplace_back(columns[k] / 2, values[k]);
+              }
+            check_petsc(MatRestoreRow(mass, row, &n_entries, &columns, &values),
+                        "MatRestoreRow");
+            if (coupled)
+              return false;
+          }
+        if (!merge(component_row[0], component_row[1], rows[p - start / 2]))
+          return false;
+      }
+    return true;
+  }
+
+  bool
+  InterleavedMass::merge(
+    const std::vector<std::pair<PetscInt, PetscScalar>> &x_row,
+    const std::vector<std::pair<PetscInt, PetscScalar>> &y_row,
+    std::vector<std::pair<PetscInt, PetscScalar>>       &row)
+  {
+    row.clear();
+    row.reserve(std::max(x_row.size(), y_row.size()));
+    auto x = x_row.begin(), y = y_row.begin();
+    while (x != x_row.end() || y != y_row.end())
+      if (y == y_row.end() || (x != x_row.end() && x->first < y->first))
+        row.push_back(*x++);
+      else if (x == x_row.end() || y->first < x->first)
+        row.push_back(*y++);
+      else
         {
-          const PetscInt row             = 2 * p + component;
-          const bool     row_constrained = constraints.is_constrained(row);
-          for (const auto &[column, value] : matrix_row(mass, row))
-            {
-              // An entry that couples x with y (a constrained row's own
-              // diagonal aside) breaks the structure.
-              if (column % 2 != static_cast<PetscInt>(component))
-                return false;
-              if (row_constrained || constraints.is_constrained(column))
-                continue;
-              const auto [entry, inserted] =
-                rows[p - start / 2].emplace(column / 2, value);
-              if (!inserted &&
-                  std::abs(entry->second - value) > 1e-12 * std::abs(value))
-                return false;
-            }
+          if (std::abs(x->second - y->second) > 1e-12 * std::abs(y->second))
+            return false;
+          row.push_back(*x++);
+          ++y;
         }
     return true;
   }
 
   void
-  InterleavedMass::create_scalar_matrix(
-    const std::vector<std::map<PetscInt, PetscScalar>> &rows)
+  InterleavedMass::create_scalar_matrix(const ScalarRows &rows)
   {
     PetscInt start, end, n;
     check_petsc(MatGetOwnershipRange(mass, &start, &end),

@@ -8,7 +8,7 @@
 
 #include <petscmat.h>
 
-#include <map>
+#include <utility>
 #include <vector>
 
 namespace DiskImpact
@@ -53,17 +53,27 @@ namespace DiskImpact
           const dealii::PETScWrappers::MPI::Vector &x) const;
 
   private:
+    /// Rows of m: each a list of (column, value), sorted by column.
+    using ScalarRows =
+      std::vector<std::vector<std::pair<PetscInt, PetscScalar>>>;
+
     /// This rank's rows of m from M's, if M = m ⊗ I2 on its unconstrained
     /// DoFs: whether it is.
     bool
-    scalar_rows(const dealii::AffineConstraints<double>      &constraints,
-                std::vector<std::map<PetscInt, PetscScalar>> &rows) const;
+    scalar_rows(const dealii::AffineConstraints<double> &constraints,
+                ScalarRows                              &rows) const;
+
+    /// The row of m from the x row's and the y row's entries: false if
+    /// they differ at a common column by more than rounding.
+    static bool
+    merge(const std::vector<std::pair<PetscInt, PetscScalar>> &x_row,
+          const std::vector<std::pair<PetscInt, PetscScalar>> &y_row,
+          std::vector<std::pair<PetscInt, PetscScalar>>       &row);
 
     /// m from this rank's @p rows and its product with both components.
     /// Collective.
     void
-    create_scalar_matrix(
-      const std::vector<std::map<PetscInt, PetscScalar>> &rows);
+    create_scalar_matrix(const ScalarRows &rows);
 
     const dealii::PETScWrappers::MPI::SparseMatrix &mass;
     Mat                                             scalar_mass     = nullptr;
