@@ -5,6 +5,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -49,7 +50,7 @@ namespace DiskImpact
     // (to rounding: the assembled entries are an ulp apart in places).
     // Both rows' columns are sorted, so their scalar columns are too.
     rows.resize((end - start) / 2);
-    std::vector<std::pair<PetscInt, PetscScalar>> component_row[2];
+    std::array<ScalarRow, 2> component_row;
     for (PetscInt p = start / 2; p < end / 2; ++p)
       {
         for (unsigned int component = 0; component < 2; ++component)
@@ -84,10 +85,9 @@ namespace DiskImpact
   }
 
   bool
-  InterleavedMass::merge(
-    const std::vector<std::pair<PetscInt, PetscScalar>> &x_row,
-    const std::vector<std::pair<PetscInt, PetscScalar>> &y_row,
-    std::vector<std::pair<PetscInt, PetscScalar>>       &row)
+  InterleavedMass::merge(const ScalarRow &x_row,
+                         const ScalarRow &y_row,
+                         ScalarRow       &row)
   {
     row.clear();
     row.reserve(std::max(x_row.size(), y_row.size()));

@@ -53,9 +53,9 @@ namespace DiskImpact
           const dealii::PETScWrappers::MPI::Vector &x) const;
 
   private:
-    /// Rows of m: each a list of (column, value), sorted by column.
-    using ScalarRows =
-      std::vector<std::vector<std::pair<PetscInt, PetscScalar>>>;
+    /// A row of m: (column, value), sorted by column.
+    using ScalarRow  = std::vector<std::pair<PetscInt, PetscScalar>>;
+    using ScalarRows = std::vector<ScalarRow>;
 
     /// This rank's rows of m from M's, if M = m ⊗ I2 on its unconstrained
     /// DoFs: whether it is.
@@ -66,9 +66,7 @@ namespace DiskImpact
     /// The row of m from the x row's and the y row's entries: false if
     /// they differ at a common column by more than rounding.
     static bool
-    merge(const std::vector<std::pair<PetscInt, PetscScalar>> &x_row,
-          const std::vector<std::pair<PetscInt, PetscScalar>> &y_row,
-          std::vector<std::pair<PetscInt, PetscScalar>>       &row);
+    merge(const ScalarRow &x_row, const ScalarRow &y_row, ScalarRow &row);
 
     /// m from this rank's @p rows and its product with both components.
     /// Collective.
