@@ -55,8 +55,9 @@ namespace DiskImpact
       {
         for (unsigned int component = 0; component < 2; ++component)
           {
-            const PetscInt row     = 2 * p + component;
-            auto          &entries = component_row[component];
+            const PetscInt row             = 2 * p + component;
+            const bool     row_constrained = constraints.is_constrained(row);
+            auto          &entries         = component_row[component];
             entries.clear();
             PetscInt           n_entries;
             const PetscInt    *columns;
@@ -69,8 +70,7 @@ namespace DiskImpact
                 // An entry that couples x with y (a constrained row's own
                 // diagonal aside) breaks the structure.
                 coupled = coupled || columns[k] % 2 != PetscInt(component);
-                if (!constraints.is_constrained(row) &&
-                    !constraints.is_constrained(columns[k]))
+                if (!row_constrained && !constraints.is_constrained(columns[k]))
                   entries.emplace_back(columns[k] / 2, values[k]);
               }
             check_petsc(MatRestoreRow(mass, row, &n_entries, &columns, &values),
