@@ -16,6 +16,7 @@ the fitted trend (docs/impact-convergence.md, "epsilon on one mesh").
 
 usage: bench/fixed_mesh_scan.py --speeds 0.06 0.14 0.001 [--level 0]
            [--law penalty] [--penalty-factor 100] [--fraction F] [--scheme S]
+           [--degree 2]
            [--fit-degree 6] [--graded-half-width 0.45] [--print] [--jobs 2]
            [-o scan.csv]
 """
@@ -42,7 +43,7 @@ subsection Material
   set Poisson ratio = 0.33
 end
 subsection Finite element
-  set Degree = 2
+  set Degree = {degree}
 end
 subsection Contact
   set Law                 = {law}
@@ -73,7 +74,8 @@ def run(v, args, work):
                             fraction=args.fraction, width=args.graded_half_width,
                             across=6 << args.level,
                             grading=0.6 / (1 << args.level),
-                            scheme=args.scheme, kappa=args.penalty_factor))
+                            scheme=args.scheme, kappa=args.penalty_factor,
+                            degree=args.degree))
     subprocess.run([args.diskimpact, prm], check=True,
                    stdout=subprocess.DEVNULL)
     with open(os.path.join(out, "summary.csv")) as f:
@@ -95,6 +97,8 @@ def main():
                         help="the mesh's 'Graded half-width' [R]")
     parser.add_argument("--penalty-factor", type=float, default=100.,
                         help="the penalty law's 'Penalty factor' (default 100)")
+    parser.add_argument("--degree", type=int, default=2,
+                        help="the elements' polynomial degree (default 2)")
     parser.add_argument("--scheme", default="energy conserving",
                         choices=["energy conserving", "newmark",
                                  "generalized alpha"])
@@ -127,7 +131,7 @@ def main():
     trend = np.polynomial.Polynomial.fit(v, eps, args.fit_degree)(v)
     residual = eps - trend
     jumps = np.diff(residual)
-    print(f"{args.law}, {args.scheme}, mesh level {args.level}, time step fraction {args.fraction:g}, "
+    print(f"{args.law}, {args.scheme}, Q{args.degree}, mesh level {args.level}, time step fraction {args.fraction:g}, "
           f"{dofs.pop()} DoFs, {len(v)} speeds {v[0]:.9g} ... {v[-1]:.9g}")
     print(f"  residual from a degree-{args.fit_degree} fit: rms {residual.std():.2e}, "
           f"largest {np.abs(residual).max():.2e}")

@@ -12,99 +12,25 @@ namespace DiskImpact
 {
   using namespace dealii;
 
-  namespace
-  {
-    /// Whether PETSc's options choose the solver or the ordering: then they
-    /// apply to the scalar matrix, as they say.
-    bool
-    factorization_set_by_options()
-    {
-      PetscBool solver_set, ordering_set;
-      check_petsc(PetscOptionsHasName(nullptr,
-                                      nullptr,
-                                      "-pc_factor_mat_solver_type",
-                                      &solver_set),
-                  "PetscOptionsHasName");
-      check_petsc(PetscOptionsHasName(nullptr,
-                                      nullptr,
-                                      "-pc_factor_mat_ordering_type",
-                                      &ordering_set),
-                  "PetscOptionsHasName");
-      return solver_set || ordering_set;
-    }
-  } // namespace
-
   CondensedSolver::CondensedSolver(const PETScWrappers::MPI::SparseMatrix &A,
                                    const IndexSet    &locally_owned,
                                    MPI_Comm           communicator,
                                    const unsigned int block_size)
-      : owned(locally_owned)
-      , communicator(communicator)
+      : CondensedSolver(std::make_shared<Factorization>(A,
+                                                        communicator,
+                                                        block_size),
+                        locally_owned,
+                        communicator)
   {
-    PC pc;
-    check_petsc(KSPCreate(communicator, &ksp), "KSPCreate");
-    check_petsc(KSPSetType(ksp, KSPPREONLY), "KSPSetType");
-    check_petsc(KSPGetPC(ksp, &pc), "KSPGetPC");
-    check_petsc(PCSetType(pc, PCCHOLESKY), "PCSetType");
-    if (Utilities::MPI::n_mpi_processes(communicator) == 1)
-      {
-        // On one rank PETSc's own Cholesky of a sequential copy solves 2-3
-        // times faster than MUMPS (docs/impact-convergence.md, "One rank's
-        // solver"): in blocks of the support points' components, reordered
-        // by AMD, or else (or if PETSc's options choose the solver or the
-        // ordering) of the scalar matrix with nested dissection.
-        check_petsc(MatMPIAIJGetLocalMat(A, MAT_INITIAL_MATRIX, &sequential),
-                    "MatMPIAIJGetLocalMat");
-        PetscInt n_rows;
-        check_petsc(MatGetSize(sequential, &n_rows, nullptr), "MatGetSize");
-        if (block_size > 1 && n_rows % block_size == 0 &&
-            !factorization_set_by_options())
-          {
-            blocked =
-              std::make_unique<SymmetricBlockCopy>(sequential, block_size);
-            MatDestroy(&sequential);
-            check_petsc(KSPSetOperators(ksp,
-                                        blocked->matrix(),
-                                        blocked->matrix()),
-                        "KSPSetOperators");
-            check_petsc(MatCreateVecs(blocked->matrix(),
-                                      &copy_order_rhs,
-                                      &copy_order_solution),
-                        "MatCreateVecs");
-          }
-        else
-          check_petsc(KSPSetOperators(ksp, sequential, sequential),
-                      "KSPSetOperators");
-        check_petsc(PCFactorSetMatSolverType(pc, MATSOLVERPETSC),
-                    "PCFactorSetMatSolverType");
-        check_petsc(PCFactorSetMatOrderingType(pc,
-                                               blocked ? MATORDERINGNATURAL :
-                                                         MATORDERINGND),
-                    "PCFactorSetMatOrderingType");
-      }
-    else
-      {
-        check_petsc(KSPSetOperators(ksp, A, A), "KSPSetOperators");
-        check_petsc(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS),
-                    "PCFactorSetMatSolverType");
-      }
-    // PETSc's options (e.g. -pc_factor_mat_ordering_type, or
-    // -mat_mumps_icntl_7 for MUMPS's ordering) apply.
-    check_petsc(KSPSetFromOptions(ksp), "KSPSetFromOptions");
-    check_petsc(KSPSetUp(ksp), "KSPSetUp");
-    ++factorizations;
   }
 
-  CondensedSolver::~CondensedSolver()
+  CondensedSolver::CondensedSolver(std::shared_ptr<Factorization> factorization,
+                                   const IndexSet                &locally_owned,
+                                   MPI_Comm                       communicator)
+      : owned(locally_owned)
+      , communicator(communicator)
+      , factorization(std::move(factorization))
   {
-    if (ksp != nullptr)
-      KSPDestroy(&ksp);
-    if (sequential != nullptr)
-      MatDestroy(&sequential);
-    if (copy_order_rhs != nullptr)
-      VecDestroy(&copy_order_rhs);
-    if (copy_order_solution != nullptr)
-      VecDestroy(&copy_order_solution);
   }
 
   const FullMatrix<double> &
@@ -116,7 +42,7 @@ namespace DiskImpact
   unsigned int
   CondensedSolver::n_factorizations() const
   {
-    return factorizations;
+    return 1;
   }
 
   unsigned int
@@ -142,15 +68,7 @@ namespace DiskImpact
                                  PETScWrappers::MPI::Vector       &y)
   {
     const auto start = std::chrono::steady_clock::now();
-    if (blocked)
-      {
-        blocked->to_copy_order(r, copy_order_rhs);
-        check_petsc(KSPSolve(ksp, copy_order_rhs, copy_order_solution),
-                    "KSPSolve");
-        blocked->from_copy_order(copy_order_solution, y);
-      }
-    else
-      check_petsc(KSPSolve(ksp, r, y), "KSPSolve");
+    factorization->solve(r, y);
     solve_seconds +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
         .count();

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "dynamics/symmetric_block_copy.h"
+#include "dynamics/factorization.h"
 
 #include <deal.II/base/index_set.h>
 
@@ -8,8 +8,6 @@
 #include <deal.II/lac/petsc_sparse_matrix.h>
 #include <deal.II/lac/petsc_vector.h>
 #include <deal.II/lac/vector.h>
-
-#include <petscksp.h>
 
 #include <functional>
 #include <map>
@@ -28,10 +26,9 @@ namespace DiskImpact
    *   u = y + X P(u_C),   where   u_C = y_C + S P(u_C)
    *
    * is a small dense system, solved by Newton's method. A is factorized
-   * once (Cholesky: MUMPS on several ranks; on one, PETSc's own, in blocks
-   * of @p block_size consecutive rows if that is > 1) for the solver's life; a
-   * column of X costs one solve when its DoF joins C; a step then costs one
-   * solve with A, the dense Newton and |C| vector updates.
+   * once (Factorization) for the solver's life; a column of X costs one
+   * solve when its DoF joins C; a step then costs one solve with A, the
+   * dense Newton and |C| vector updates.
    */
   class CondensedSolver
   {
@@ -40,7 +37,10 @@ namespace DiskImpact
                     const dealii::IndexSet &locally_owned,
                     MPI_Comm                communicator,
                     unsigned int            block_size = 1);
-    ~CondensedSolver();
+    /// With A's factorization, made (or refactorized) for A elsewhere.
+    CondensedSolver(std::shared_ptr<Factorization> factorization,
+                    const dealii::IndexSet        &locally_owned,
+                    MPI_Comm                       communicator);
     CondensedSolver(const CondensedSolver &) = delete;
     CondensedSolver &
     operator=(const CondensedSolver &) = delete;
@@ -103,6 +103,7 @@ namespace DiskImpact
                     dealii::Vector<double>       &u_C,
                     unsigned int                 &iterations) const;
 
+    /// Factorizations of A made for this solver: one.
     unsigned int
     n_factorizations() const;
     /// Solves with A: one per solve() plus one per column of X.
@@ -120,16 +121,9 @@ namespace DiskImpact
     apply_inverse(const dealii::PETScWrappers::MPI::Vector &r,
                   dealii::PETScWrappers::MPI::Vector       &y);
 
-    dealii::IndexSet owned;
-    MPI_Comm         communicator;
-    KSP              ksp = nullptr;
-    /// A's sequential copy, factorized instead of A on one rank.
-    Mat sequential = nullptr;
-    /// Or its copy in blocks of @p block_size rows, with the solve's
-    /// right-hand side and solution in the copy's order.
-    std::unique_ptr<SymmetricBlockCopy>          blocked;
-    Vec                                          copy_order_rhs      = nullptr;
-    Vec                                          copy_order_solution = nullptr;
+    dealii::IndexSet                             owned;
+    MPI_Comm                                     communicator;
+    std::shared_ptr<Factorization>               factorization;
     std::vector<dealii::types::global_dof_index> observed_dofs;
     /// The positions in D of the DoFs this rank owns, and those DoFs.
     std::vector<unsigned int>                    owned_positions;
@@ -140,7 +134,6 @@ namespace DiskImpact
     std::vector<dealii::Vector<double>>             observed_columns;
     /// S = E_C^T X.
     dealii::FullMatrix<double> s_matrix;
-    unsigned int               factorizations    = 0;
     unsigned int               triangular_solves = 0;
     double                     solve_seconds     = 0.;
   };

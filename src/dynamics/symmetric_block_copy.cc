@@ -2,6 +2,8 @@
 
 #include "base/petsc_check.h"
 
+#include <deal.II/base/exceptions.h>
+
 #include <algorithm>
 
 namespace DiskImpact
@@ -33,8 +35,21 @@ namespace DiskImpact
                 "MatCreateSeqSBAIJ");
     check_petsc(MatSetOption(copy, MAT_IGNORE_LOWER_TRIANGULAR, PETSC_TRUE),
                 "MatSetOption");
+    copy_values(sequential);
+    // Later values must fit the same pattern.
+    check_petsc(MatSetOption(copy, MAT_NEW_NONZERO_LOCATION_ERR, PETSC_TRUE),
+                "MatSetOption");
+  }
+
+  void
+  SymmetricBlockCopy::copy_values(Mat sequential)
+  {
+    PetscInt n_rows;
+    check_petsc(MatGetSize(sequential, &n_rows, nullptr), "MatGetSize");
+    AssertThrow(n_rows == static_cast<PetscInt>(new_row.size()),
+                dealii::ExcDimensionMismatch(n_rows, new_row.size()));
     std::vector<PetscInt> columns;
-    for (PetscInt i = 0; i < n_blocks * block_size; ++i)
+    for (PetscInt i = 0; i < n_rows; ++i)
       {
         PetscInt           n_entries;
         const PetscInt    *old_columns;

@@ -29,6 +29,11 @@ namespace DiskImpact
     SymmetricBlockCopy &
     operator=(const SymmetricBlockCopy &) = delete;
 
+    /// The values of @p sequential, whose pattern is the first matrix's,
+    /// into the copy: the order and the allocation stay.
+    void
+    copy_values(Mat sequential);
+
     /// The copy (upper block triangle), in the new order.
     Mat
     matrix() const;

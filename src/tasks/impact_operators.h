@@ -1,6 +1,7 @@
 #pragma once
 
 #include "contact/contact.h"
+#include "dynamics/factorization.h"
 #include "elasticity/constraint_map.h"
 #include "elasticity/elasticity_operator.h"
 #include "elasticity/interleaved_mass.h"
@@ -25,8 +26,8 @@ namespace DiskImpact
    * matrix, the wall law and the bound on the contact candidates' gap. The
    * runs of a convergence study that differ only in their time step share
    * one (docs/impact-convergence.md, "Runs on one mesh share it"); the time
-   * stepping only reads it, besides the effective matrix, which each
-   * factorization writes afresh.
+   * stepping only reads it, besides the effective matrix and its
+   * factorization, which each run's time step makes afresh.
    */
   struct ImpactOperators
   {
@@ -50,5 +51,8 @@ namespace DiskImpact
     /// The candidates for contact: the edge points whose undeformed gap is
     /// below this bound.
     double candidate_bound = 0.;
+    /// The effective matrix's factorization, once there is one: a run with
+    /// another time step refactorizes it, keeping its pattern's part.
+    std::shared_ptr<Factorization> factorization;
   };
 } // namespace DiskImpact

@@ -315,11 +315,17 @@ namespace DiskImpact
                                         integrator.mass_coefficient(dt),
                                         integrator.damping_coefficient(dt));
 
-    solver = std::make_unique<CondensedSolver>(
-      A,
-      op.locally_owned_dofs(),
-      communicator,
-      op.get_dof_handler().get_fe().n_components());
+    // The old solver's columns belong to the old factorization.
+    solver.reset();
+    auto &factorization = operators->factorization;
+    if (factorization)
+      factorization->refactorize(A);
+    else
+      factorization = std::make_shared<Factorization>(
+        A, communicator, op.get_dof_handler().get_fe().n_components());
+    solver = std::make_unique<CondensedSolver>(factorization,
+                                               op.locally_owned_dofs(),
+                                               communicator);
     solver->set_observed_dofs(zone->candidate_dofs());
     solver->add_dofs(zone->active_dofs());
   }

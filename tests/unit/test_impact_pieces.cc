@@ -6,6 +6,7 @@
 #include "base/parameters.h"
 #include "body/geometry.h"
 #include "dynamics/condensed_solver.h"
+#include "dynamics/factorization.h"
 #include "elasticity/elasticity_operator.h"
 #include "elasticity/material.h"
 #include "half_disk.h"
@@ -205,6 +206,38 @@ TEST_CASE("condensed solver in 2x2 blocks solves as the scalar one",
   residual = blocked;
   residual.add(-1., scalar);
   CHECK(residual.linfty_norm() <= 1e-10 * scalar.linfty_norm());
+}
+
+TEST_CASE("a refactorized matrix solves as one factorized afresh",
+          "[impact][fe]")
+{
+  // Factorization::refactorize() keeps the block copy's order and the
+  // symbolic factorization of the first matrix. For another time step's
+  // effective matrix on the same pattern its solution must be that of a
+  // factorization made for that matrix alone, in blocks and in scalars,
+  // on one rank (PETSc's Cholesky) and on several (MUMPS).
+  HalfDiskOperator half_disk_operator(3, PlaneModel::plane_strain, 0.45);
+  auto            &op = half_disk_operator.op;
+  auto             b = op.create_vector(), refactorized = op.create_vector(),
+       afresh = op.create_vector();
+  for (const auto i : op.locally_owned_dofs())
+    if (!op.get_constraints().is_constrained(i))
+      b(i) = std::cos(0.71 * i);
+  b.compress(dealii::VectorOperation::insert);
+  for (const unsigned int block_size : {1u, 2u})
+    {
+      Factorization factorization(op.effective_matrix(1.,
+                                                      1. / (0.05 * 0.05),
+                                                      0.),
+                                  MPI_COMM_WORLD,
+                                  block_size);
+      const auto   &A = op.effective_matrix(1., 1. / (0.02 * 0.02), 0.);
+      factorization.refactorize(A);
+      factorization.solve(b, refactorized);
+      Factorization(A, MPI_COMM_WORLD, block_size).solve(b, afresh);
+      afresh.add(-1., refactorized);
+      CHECK(afresh.linfty_norm() <= 1e-13 * refactorized.linfty_norm());
+    }
 }
 
 TEST_CASE("effective matrix cK K + cM M + cD D from symmetric forms",
