@@ -52,7 +52,8 @@ namespace DiskImpact
     /// below this bound.
     double candidate_bound = 0.;
     /// The effective matrix's factorization, once there is one: a run with
-    /// another time step refactorizes it, keeping its pattern's part.
+    /// another time step refactorizes it, keeping its pattern's part. So
+    /// the runs that share these operators run one after the other.
     std::shared_ptr<Factorization> factorization;
   };
 } // namespace DiskImpact
