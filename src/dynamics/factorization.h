@@ -44,8 +44,9 @@ namespace DiskImpact
           dealii::PETScWrappers::MPI::Vector       &y);
 
   private:
-    /// A's values into the matrix PETSc factorizes (the same object as
-    /// before, if there was one), then the factorization.
+    /// Give PETSc the matrix it factorizes (the block copy, the sequential
+    /// copy or @p A itself, the same object as before if there was one)
+    /// and factorize it.
     void
     factorize(const dealii::PETScWrappers::MPI::SparseMatrix &A);
 
