@@ -133,6 +133,17 @@ namespace DiskImpact
                       "step where the finest mesh's own halving moved "
                       "epsilon by less than half the mesh's part, else "
                       "halves it too [-]; 0: never.");
+    prm.declare_entry("Halve first above",
+                      "0",
+                      Patterns::Double(0., 1.),
+                      "With 'Largest time step halvings' > 0 and two 'Mesh "
+                      "levels': the split run (the base mesh at the second "
+                      "level's time step) runs first, and where the time "
+                      "step's part it shows, 3 |d_t|, is at least this share "
+                      "of the 'Target error', the second mesh level runs at "
+                      "the halved time step at once, with its split run: "
+                      "its run at the unhalved step would only show that "
+                      "the halving is needed [-]; 0: never.");
     prm.declare_entry("Degree levels from",
                       "0",
                       Patterns::Integer(0, 6),
@@ -157,7 +168,12 @@ namespace DiskImpact
     separate_time_step    = prm.get_bool("Separate time step error");
     largest_time_halvings = prm.get_integer("Largest time step halvings");
     degree_levels_from    = prm.get_integer("Degree levels from");
+    halve_first_above     = prm.get_double("Halve first above");
     prm.leave_subsection();
+    require(halve_first_above == 0. ||
+              (largest_time_halvings > 0 && mesh_levels == 2),
+            "Impact convergence: 'Halve first above' > 0 needs 'Largest "
+            "time step halvings' > 0 and 'Mesh levels = 2'");
     require(degree_levels_from != 1,
             "Impact convergence: 'Degree levels from = 1' would leave the "
             "base mesh unrefined in every level; use 0 (never) or >= 2");
@@ -395,7 +411,13 @@ namespace DiskImpact
           if (run.factor == sequence.name && run.time_halvings == 0)
             values.push_back(run.summary.epsilon);
         if (values.size() < 2)
-          continue;
+          {
+            // The second mesh level ran at the halved step at once ('Halve
+            // first above'): the split bar is the whole estimate.
+            if (sequence.name == "mesh")
+              add_separate_time_step_error(result);
+            continue;
+          }
         const auto limit =
           richardson_estimate(values, sequence.ratio, sequence.expected_order);
         result.factors.push_back(sequence.name);
@@ -467,6 +489,11 @@ namespace DiskImpact
     // is that halving's. Its split run, mesh level L at T, is the finest run.
     const auto [m, t]                    = mesh_and_time_level(finest);
     const auto *finest_at_twice_the_step = find_run(result, m, t - 1);
+    // Where the second level ran at the halved step at once, its run at
+    // twice the step comes first: the choice below needs it.
+    if (k > 0 && split && !time_dominates &&
+        finest_at_twice_the_step == nullptr)
+      return {{"mesh", L, k - 1, {}, 0.}};
     if (k > 0 && split && !time_dominates &&
         finest_at_twice_the_step != nullptr &&
         std::abs(finest.summary.epsilon -
@@ -479,6 +506,19 @@ namespace DiskImpact
     return more;
   }
 
+  std::vector<StudyRun>
+  ImpactConvergenceStudy::second_mesh_level(
+    const ConvergedEpsilon &result) const
+  {
+    // d_t on the base mesh, from the split run: level 1 at the halved step
+    // at once where 3 |d_t| alone fills the share of the target.
+    const double d_t = find_run(result, 0, 1)->summary.epsilon -
+                       result.runs.front().summary.epsilon;
+    if (3. * std::abs(d_t) >= halve_first_above * target_error)
+      return {{"mesh", 1, 1, {}, 0.}, {"split", 1, 1, {}, 0.}};
+    return {{"mesh", 1, 0, {}, 0.}};
+  }
+
   ConvergedEpsilon
   ImpactConvergenceStudy::run(const Parameters &parameters,
                               MPI_Comm          communicator,
@@ -488,9 +528,14 @@ namespace DiskImpact
     std::vector<Parameters>           points{parameters};
     const std::array<unsigned int, 3> levels{
       {mesh_levels, time_step_levels, penalty_levels}};
+    const bool halve_first = halve_first_above > 0.;
     for (unsigned int i = 0; i < levels.size(); ++i)
       for (unsigned int level = 1; level < levels[i]; ++level)
         {
+          // With 'Halve first above' the second mesh level waits for the
+          // split run.
+          if (halve_first && factor_sequences[i].name == "mesh")
+            continue;
           runs.push_back({factor_sequences[i].name, level, 0, {}, 0.});
           points.push_back(
             refined(parameters, factor_sequences[i].name, level));
@@ -506,7 +551,17 @@ namespace DiskImpact
 
     ConvergedEpsilon result;
     SharedOperators  shared;
+    auto             run_more = [&](const std::vector<StudyRun> &more) {
+      std::vector<Parameters> more_points;
+      for (const auto &run : more)
+        more_points.push_back(
+          refined(parameters, run.factor, run.level, run.time_halvings));
+      const auto finer = run_all(more, more_points, communicator, log, shared);
+      result.runs.insert(result.runs.end(), finer.begin(), finer.end());
+    };
     result.runs = run_all(runs, points, communicator, log, shared);
+    if (halve_first)
+      run_more(second_mesh_level(result));
     estimate(result);
     // More runs while the bar exceeds the target (every rank sees the same
     // bar, so all take the same decision).
@@ -515,13 +570,7 @@ namespace DiskImpact
         const auto more = next_refinement(result);
         if (more.empty())
           break;
-        std::vector<Parameters> more_points;
-        for (const auto &run : more)
-          more_points.push_back(
-            refined(parameters, run.factor, run.level, run.time_halvings));
-        const auto finer =
-          run_all(more, more_points, communicator, log, shared);
-        result.runs.insert(result.runs.end(), finer.begin(), finer.end());
+        run_more(more);
         estimate(result);
       }
     return result;

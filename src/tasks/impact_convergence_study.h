@@ -142,9 +142,16 @@ namespace DiskImpact
     /// The runs that refine @p result next while its bar exceeds the target
     /// (none: stop): a time step halving of the last two mesh levels where
     /// the time step's part of the last difference is at least half the
-    /// mesh's (it costs a quarter of a mesh level), else one mesh level.
+    /// mesh's (it costs a quarter of a mesh level), else one mesh level
+    /// (first the finest mesh at twice its step, where a halving first
+    /// skipped it and the choice needs it).
     std::vector<StudyRun>
     next_refinement(const ConvergedEpsilon &result) const;
+    /// With 'Halve first above', after the base and split runs: mesh level
+    /// 1 at the halved step with its split run where the split's time step
+    /// part 3 |d_t| fills that share of the target, else at its own step.
+    std::vector<StudyRun>
+    second_mesh_level(const ConvergedEpsilon &result) const;
     /// @p parameters with @p factor refined @p level times and the time step
     /// halved @p time_halvings more times.
     Parameters
@@ -160,7 +167,8 @@ namespace DiskImpact
     unsigned int largest_mesh_levels   = 3;
     bool         separate_time_step    = false;
     unsigned int largest_time_halvings = 0;
-    unsigned int degree_levels_from    = 0; ///< 0: every level refines h
+    unsigned int degree_levels_from    = 0;  ///< 0: every level refines h
+    double       halve_first_above     = 0.; ///< 0: never
   };
 
   /// Task 'impact convergence': the study at 'Velocity', printed and
