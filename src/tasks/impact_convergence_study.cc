@@ -489,11 +489,11 @@ namespace DiskImpact
     // is that halving's. Its split run, mesh level L at T, is the finest run.
     const auto [m, t]                    = mesh_and_time_level(finest);
     const auto *finest_at_twice_the_step = find_run(result, m, t - 1);
-    // Where the second level ran at the halved step at once, its run at
-    // twice the step comes first: the choice below needs it.
-    if (k > 0 && split && !time_dominates &&
-        finest_at_twice_the_step == nullptr)
-      return {{"mesh", L, k - 1, {}, 0.}};
+    // Where level 1 ran at the halved step at once ('Halve first above'),
+    // its run at the unhalved step comes first: the choice below needs it.
+    if (halve_first_above > 0. && L == 1 && k == 1 && split &&
+        !time_dominates && finest_at_twice_the_step == nullptr)
+      return {{"mesh", 1, 0, {}, 0.}};
     if (k > 0 && split && !time_dominates &&
         finest_at_twice_the_step != nullptr &&
         std::abs(finest.summary.epsilon -
