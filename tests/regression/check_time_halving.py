@@ -15,7 +15,8 @@ halving and d_h the new level's difference, and FINER lies inside.
 With --halved-first SHARE the study ran the split run first and, its
 time step's part 3 |d_t| at least SHARE of the target, the second level
 at the halved step at once: four runs, without level 1 at the unhalved
-step; the bar is that of the halved runs, and FINER lies inside.
+step (with --then-mesh, that run comes after the halved level 1); the bar
+is that of the halved runs, and FINER lies inside.
 
 usage: check_time_halving.py OUTPUT_DIR TARGET FINER [--then-mesh]
                              [--halved-first SHARE]
@@ -59,6 +60,10 @@ if ok and share is not None:
     d_t = first[1] - base
     print(f"base mesh: d_t = {d_t:.2e}, 3 |d_t| = {3 * abs(d_t):.2e}")
     ok &= 3 * abs(d_t) >= share * target
+    # The halved level 1 ran before any level 1 at the unhalved step.
+    order = [(r["factor"], int(r["level"]), int(r["time_halvings"])) for r in runs]
+    ok &= order.index(("mesh", 1, 1)) < min(
+        [i for i, run in enumerate(order) if run == ("mesh", 1, 0)] + [len(order)])
 if ok:
     d_t, d_h = first[1] - base, first[0] - first[1]
     if share is None or then_mesh:
