@@ -95,6 +95,10 @@ namespace DiskImpact
           owned_positions.push_back(i);
           owned_observed_dofs.push_back(observed_dofs[i]);
         }
+    // C is a subset of D: room for all its columns, so that a growing C
+    // never copies the columns it has.
+    columns.reserve(observed_dofs.size());
+    observed_columns.reserve(observed_dofs.size());
   }
 
   Vector<double>
