@@ -33,29 +33,39 @@ namespace DiskImpact
   Factorization::Factorization(const PETScWrappers::MPI::SparseMatrix &A,
                                MPI_Comm           communicator,
                                const unsigned int block_size)
+      : Factorization(MatrixSum{{1., &A}}, communicator, block_size)
+  {
+  }
+
+  Factorization::Factorization(const MatrixSum   &A,
+                               MPI_Comm           communicator,
+                               const unsigned int block_size)
+      : on_one_rank(Utilities::MPI::n_mpi_processes(communicator) == 1)
   {
     PC pc;
     check_petsc(KSPCreate(communicator, &ksp), "KSPCreate");
     check_petsc(KSPSetType(ksp, KSPPREONLY), "KSPSetType");
     check_petsc(KSPGetPC(ksp, &pc), "KSPGetPC");
     check_petsc(PCSetType(pc, PCCHOLESKY), "PCSetType");
-    if (Utilities::MPI::n_mpi_processes(communicator) == 1)
+    if (on_one_rank)
       {
         // On one rank PETSc's own Cholesky of a sequential copy solves 2-3
         // times faster than MUMPS (docs/impact-convergence.md, "One rank's
         // solver"): in blocks of the support points' components, reordered
         // by AMD, or else (or if PETSc's options choose the solver or the
         // ordering) of the scalar matrix with nested dissection.
-        check_petsc(MatMPIAIJGetLocalMat(A, MAT_INITIAL_MATRIX, &sequential),
-                    "MatMPIAIJGetLocalMat");
-        PetscInt n_rows;
-        check_petsc(MatGetSize(sequential, &n_rows, nullptr), "MatGetSize");
-        if (block_size > 1 && n_rows % block_size == 0 &&
+        const auto &first = *A.front().matrix;
+        if (block_size > 1 && first.m() % block_size == 0 &&
             !factorization_set_by_options())
           {
-            blocked =
-              std::make_unique<SymmetricBlockCopy>(sequential, block_size);
-            MatDestroy(&sequential);
+            // The block copy's pattern and order from the first term's.
+            Mat pattern;
+            check_petsc(MatMPIAIJGetLocalMat(first,
+                                             MAT_INITIAL_MATRIX,
+                                             &pattern),
+                        "MatMPIAIJGetLocalMat");
+            blocked = std::make_unique<SymmetricBlockCopy>(pattern, block_size);
+            MatDestroy(&pattern);
             check_petsc(MatCreateVecs(blocked->matrix(),
                                       &copy_order_rhs,
                                       &copy_order_solution),
@@ -90,30 +100,75 @@ namespace DiskImpact
   }
 
   void
-  Factorization::refactorize(const PETScWrappers::MPI::SparseMatrix &A)
+  Factorization::refactorize(const MatrixSum &A)
   {
-    if (blocked)
-      {
-        Mat local;
-        check_petsc(MatMPIAIJGetLocalMat(A, MAT_INITIAL_MATRIX, &local),
-                    "MatMPIAIJGetLocalMat");
-        blocked->copy_values(local);
-        MatDestroy(&local);
-      }
-    else if (sequential != nullptr)
-      check_petsc(MatMPIAIJGetLocalMat(A, MAT_REUSE_MATRIX, &sequential),
-                  "MatMPIAIJGetLocalMat");
     factorize(A);
   }
 
   void
-  Factorization::factorize(const PETScWrappers::MPI::SparseMatrix &A)
+  Factorization::refactorize(const PETScWrappers::MPI::SparseMatrix &A)
+  {
+    factorize(MatrixSum{{1., &A}});
+  }
+
+  const PETScWrappers::MPI::SparseMatrix &
+  Factorization::summed(const MatrixSum &A)
+  {
+    const auto &first = *A.front().matrix;
+    if (A.size() == 1 && A.front().coefficient == 1.)
+      return first;
+    if (sum.m() == 0)
+      sum.reinit(first);
+    sum.copy_from(first);
+    sum *= A.front().coefficient;
+    // PETSc's sum for a known pattern: deal.II's add() assumes a different
+    // one and rebuilds the matrix.
+    for (unsigned int k = 1; k < A.size(); ++k)
+      check_petsc(MatAXPY(sum.petsc_matrix(),
+                          A[k].coefficient,
+                          static_cast<Mat>(*A[k].matrix),
+                          A[k].pattern),
+                  "MatAXPY");
+    return sum;
+  }
+
+  void
+  Factorization::factorize(const MatrixSum &A)
   {
     // The same matrix object with new values: PETSc sees its pattern
     // unchanged and redoes the numeric factorization only.
-    Mat factorized = blocked               ? blocked->matrix() :
-                     sequential != nullptr ? sequential :
-                                             static_cast<Mat>(A);
+    Mat factorized;
+    if (blocked)
+      {
+        // The terms' values summed into the copy: on one rank a matrix's
+        // local part is its own diagonal block, no copy.
+        std::vector<std::pair<PetscScalar, Mat>> local_terms;
+        for (const auto &term : A)
+          {
+            Mat local;
+            check_petsc(MatMPIAIJGetLocalMat(*term.matrix,
+                                             MAT_INITIAL_MATRIX,
+                                             &local),
+                        "MatMPIAIJGetLocalMat");
+            local_terms.emplace_back(term.coefficient, local);
+          }
+        blocked->copy_values(local_terms);
+        for (auto &term : local_terms)
+          MatDestroy(&term.second);
+        factorized = blocked->matrix();
+      }
+    else if (on_one_rank)
+      {
+        check_petsc(MatMPIAIJGetLocalMat(summed(A),
+                                         sequential != nullptr ?
+                                           MAT_REUSE_MATRIX :
+                                           MAT_INITIAL_MATRIX,
+                                         &sequential),
+                    "MatMPIAIJGetLocalMat");
+        factorized = sequential;
+      }
+    else
+      factorized = summed(A);
     check_petsc(KSPSetOperators(ksp, factorized, factorized),
                 "KSPSetOperators");
     check_petsc(KSPSetUp(ksp), "KSPSetUp");

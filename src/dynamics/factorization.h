@@ -8,9 +8,24 @@
 #include <petscksp.h>
 
 #include <memory>
+#include <vector>
 
 namespace DiskImpact
 {
+  /// One term c A of a sum of matrices, with how A's pattern lies within the
+  /// first term's (for PETSc's MatAXPY).
+  struct MatrixTerm
+  {
+    double                                          coefficient;
+    const dealii::PETScWrappers::MPI::SparseMatrix *matrix;
+    MatStructure pattern = SUBSET_NONZERO_PATTERN;
+  };
+
+  /// The symmetric matrix sum_i c_i A_i, the first term's pattern holding
+  /// the others': the effective matrix c_K K + c_M M (+ c_D D) of an
+  /// implicit step.
+  using MatrixSum = std::vector<MatrixTerm>;
+
   /**
    * The Cholesky factorization of a symmetric positive definite matrix A
    * whose sparsity pattern stays fixed: MUMPS on several ranks; on one,
@@ -21,10 +36,18 @@ namespace DiskImpact
    * and allocation and the symbolic factorization. The runs of a study on
    * one mesh differ in their time step, so in A's values only
    * (docs/impact-convergence.md, "One factorization per mesh").
+   *
+   * A may be given as a MatrixSum. The block copy takes the sum of the
+   * terms' values directly; otherwise the factorization sums them into a
+   * matrix of its own (docs/impact-convergence.md, "The effective matrix
+   * without a matrix of its own").
    */
   class Factorization
   {
   public:
+    Factorization(const MatrixSum &A,
+                  MPI_Comm         communicator,
+                  unsigned int     block_size = 1);
     Factorization(const dealii::PETScWrappers::MPI::SparseMatrix &A,
                   MPI_Comm                                        communicator,
                   unsigned int block_size = 1);
@@ -36,6 +59,8 @@ namespace DiskImpact
     /// Factorize @p A, whose pattern must be the first matrix's, afresh:
     /// the numeric factorization only.
     void
+    refactorize(const MatrixSum &A);
+    void
     refactorize(const dealii::PETScWrappers::MPI::SparseMatrix &A);
 
     /// y = A^{-1} r. Collective.
@@ -45,12 +70,21 @@ namespace DiskImpact
 
   private:
     /// Give PETSc the matrix it factorizes (the block copy, the sequential
-    /// copy or @p A itself, the same object as before if there was one)
-    /// and factorize it.
+    /// copy or the sum of @p A itself, the same object as before if there
+    /// was one) with @p A's values, and factorize it.
     void
-    factorize(const dealii::PETScWrappers::MPI::SparseMatrix &A);
+    factorize(const MatrixSum &A);
 
-    KSP ksp = nullptr;
+    /// The sum of @p A's terms as one matrix: the first term's matrix if it
+    /// is the only one, with coefficient 1, else @p sum.
+    const dealii::PETScWrappers::MPI::SparseMatrix &
+    summed(const MatrixSum &A);
+
+    bool on_one_rank;
+    KSP  ksp = nullptr;
+    /// A's terms summed, where they are not the first term's matrix alone
+    /// and no block copy sums them.
+    dealii::PETScWrappers::MPI::SparseMatrix sum;
     /// A's sequential copy, factorized instead of A on one rank.
     Mat sequential = nullptr;
     /// Or its copy in blocks of @p block_size rows, with the solve's

@@ -35,20 +35,34 @@ namespace DiskImpact
                 "MatCreateSeqSBAIJ");
     check_petsc(MatSetOption(copy, MAT_IGNORE_LOWER_TRIANGULAR, PETSC_TRUE),
                 "MatSetOption");
-    copy_values(sequential);
-    // Later values must fit the same pattern.
-    check_petsc(MatSetOption(copy, MAT_NEW_NONZERO_LOCATION_ERR, PETSC_TRUE),
-                "MatSetOption");
   }
 
   void
-  SymmetricBlockCopy::copy_values(Mat sequential)
+  SymmetricBlockCopy::copy_values(
+    const std::vector<std::pair<PetscScalar, Mat>> &terms)
+  {
+    if (filled)
+      check_petsc(MatZeroEntries(copy), "MatZeroEntries");
+    for (const auto &[coefficient, sequential] : terms)
+      add_values(coefficient, sequential);
+    check_petsc(MatAssemblyBegin(copy, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
+    check_petsc(MatAssemblyEnd(copy, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+    if (!filled)
+      // Later values must fit the same pattern.
+      check_petsc(MatSetOption(copy, MAT_NEW_NONZERO_LOCATION_ERR, PETSC_TRUE),
+                  "MatSetOption");
+    filled = true;
+  }
+
+  void
+  SymmetricBlockCopy::add_values(const PetscScalar coefficient, Mat sequential)
   {
     PetscInt n_rows;
     check_petsc(MatGetSize(sequential, &n_rows, nullptr), "MatGetSize");
     AssertThrow(n_rows == static_cast<PetscInt>(new_row.size()),
                 dealii::ExcDimensionMismatch(n_rows, new_row.size()));
-    std::vector<PetscInt> columns;
+    std::vector<PetscInt>    columns;
+    std::vector<PetscScalar> scaled;
     for (PetscInt i = 0; i < n_rows; ++i)
       {
         PetscInt           n_entries;
@@ -57,22 +71,24 @@ namespace DiskImpact
         check_petsc(MatGetRow(sequential, i, &n_entries, &old_columns, &values),
                     "MatGetRow");
         columns.resize(n_entries);
+        scaled.resize(n_entries);
         for (PetscInt k = 0; k < n_entries; ++k)
-          columns[k] = new_row[old_columns[k]];
+          {
+            columns[k] = new_row[old_columns[k]];
+            scaled[k]  = coefficient * values[k];
+          }
         check_petsc(MatSetValues(copy,
                                  1,
                                  &new_row[i],
                                  n_entries,
                                  columns.data(),
-                                 values,
-                                 INSERT_VALUES),
+                                 scaled.data(),
+                                 ADD_VALUES),
                     "MatSetValues");
         check_petsc(
           MatRestoreRow(sequential, i, &n_entries, &old_columns, &values),
           "MatRestoreRow");
       }
-    check_petsc(MatAssemblyBegin(copy, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
-    check_petsc(MatAssemblyEnd(copy, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
   }
 
   SymmetricBlockCopy::~SymmetricBlockCopy()

@@ -2,6 +2,7 @@
 
 #include <petscmat.h>
 
+#include <utility>
 #include <vector>
 
 namespace DiskImpact
@@ -23,16 +24,20 @@ namespace DiskImpact
   class SymmetricBlockCopy
   {
   public:
+    /// The copy's order and allocation for the pattern of @p sequential;
+    /// copy_values() gives it its values.
     SymmetricBlockCopy(Mat sequential, PetscInt block_size);
     ~SymmetricBlockCopy();
     SymmetricBlockCopy(const SymmetricBlockCopy &) = delete;
     SymmetricBlockCopy &
     operator=(const SymmetricBlockCopy &) = delete;
 
-    /// The values of @p sequential, whose pattern is the first matrix's,
-    /// into the copy: the order and the allocation stay.
+    /// The values of sum_i c_i A_i for the @p terms (c_i, A_i), sequential
+    /// matrices whose patterns lie within the first matrix's, into the
+    /// copy: the order and the allocation stay. Each entry is
+    /// ((c_1 a_1 + c_2 a_2) + ...), as PETSc's MatScale and MatAXPY sum.
     void
-    copy_values(Mat sequential);
+    copy_values(const std::vector<std::pair<PetscScalar, Mat>> &terms);
 
     /// The copy (upper block triangle), in the new order.
     Mat
@@ -47,6 +52,10 @@ namespace DiskImpact
     from_copy_order(Vec in, Vec out) const;
 
   private:
+    /// Add @p coefficient times the values of @p sequential to the copy.
+    void
+    add_values(PetscScalar coefficient, Mat sequential);
+
     /// The blocks each block row couples with (the diagonal included).
     std::vector<std::vector<PetscInt>>
     block_graph(Mat sequential) const;
@@ -58,5 +67,7 @@ namespace DiskImpact
     PetscInt              block_size;
     std::vector<PetscInt> new_row;
     Mat                   copy = nullptr;
+    /// Whether the copy has had values (and so its pattern).
+    bool filled = false;
   };
 } // namespace DiskImpact

@@ -1,6 +1,5 @@
 #include "elasticity/elasticity_operator.h"
 
-#include "base/petsc_check.h"
 #include "body/geometry.h"
 
 #include <deal.II/base/mpi.h>
@@ -543,28 +542,6 @@ namespace DiskImpact
   ElasticityOperator::tangent_reset_to_stiffness()
   {
     tangent.copy_from(stiffness);
-    return tangent;
-  }
-
-  PETScWrappers::MPI::SparseMatrix &
-  ElasticityOperator::effective_matrix(const double stiffness_coefficient,
-                                       const double mass_coefficient,
-                                       const double damping_coefficient)
-  {
-    tangent_reset_to_stiffness() *= stiffness_coefficient;
-    // PETSc's sum for a known pattern: deal.II's add() assumes a different
-    // one and rebuilds the matrix.
-    check_petsc(MatAXPY(tangent.petsc_matrix(),
-                        mass_coefficient,
-                        mass.petsc_matrix(),
-                        SUBSET_NONZERO_PATTERN),
-                "MatAXPY");
-    if (with_damping)
-      check_petsc(MatAXPY(tangent.petsc_matrix(),
-                          damping_coefficient,
-                          damping.petsc_matrix(),
-                          SAME_NONZERO_PATTERN),
-                  "MatAXPY");
     return tangent;
   }
 

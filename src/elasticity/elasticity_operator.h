@@ -144,14 +144,6 @@ namespace DiskImpact
     /// The Newton tangent, reset to K (setup() with with_tangent).
     dealii::PETScWrappers::MPI::SparseMatrix &
     tangent_reset_to_stiffness();
-    /// The tangent set to @p stiffness_coefficient K + @p mass_coefficient M
-    /// (+ @p damping_coefficient D with damping): the effective matrix of an
-    /// implicit step. M's pattern is a subset of K's and D has K's, so the
-    /// sums keep the tangent's structure.
-    dealii::PETScWrappers::MPI::SparseMatrix &
-    effective_matrix(double stiffness_coefficient,
-                     double mass_coefficient,
-                     double damping_coefficient);
     /// The Newton tangent as last assembled.
     const dealii::PETScWrappers::MPI::SparseMatrix &
     tangent_matrix() const;

@@ -21,7 +21,7 @@ namespace DiskImpact
     const double R                  = geometry.radius();
     const double largest_half_width = impact.largest_half_width(parameters);
     impact.create_mesh(parameters, triangulation);
-    op.setup(triangulation, geometry, true);
+    op.setup(triangulation, geometry, false);
     // Two bodies: the penalty k = kappa E / h with the pair's modulus
     // 1 / E = 1 / E2 + 1 / E2' (the wall's with identical bodies, whose gap
     // is twice the wall's).

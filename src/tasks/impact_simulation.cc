@@ -310,10 +310,14 @@ namespace DiskImpact
         solves_before += solver->n_triangular_solves();
         solve_time_before += solver->triangular_solve_time();
       }
+    // A = cK K + cM M (+ cD D): M's pattern is a subset of K's, D's is K's.
     const auto &integrator = parameters.time_integrator;
-    const auto &A = op.effective_matrix(integrator.stiffness_coefficient(),
-                                        integrator.mass_coefficient(dt),
-                                        integrator.damping_coefficient(dt));
+    MatrixSum   A{{integrator.stiffness_coefficient(), &op.stiffness_matrix()},
+                {integrator.mass_coefficient(dt), &op.mass_matrix()}};
+    if (op.has_damping())
+      A.push_back({integrator.damping_coefficient(dt),
+                   &op.damping_matrix(),
+                   SAME_NONZERO_PATTERN});
 
     // The old solver's columns belong to the old factorization.
     solver.reset();
