@@ -41,6 +41,10 @@ namespace DiskImpact
   SymmetricBlockCopy::copy_values(
     const std::vector<std::pair<PetscScalar, Mat>> &terms)
   {
+    // Values before: zero them. None (the first call): the terms make the
+    // pattern, which later values must fit.
+    PetscBool filled;
+    check_petsc(MatAssembled(copy, &filled), "MatAssembled");
     if (filled)
       check_petsc(MatZeroEntries(copy), "MatZeroEntries");
     for (const auto &[coefficient, sequential] : terms)
@@ -48,10 +52,8 @@ namespace DiskImpact
     check_petsc(MatAssemblyBegin(copy, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
     check_petsc(MatAssemblyEnd(copy, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
     if (!filled)
-      // Later values must fit the same pattern.
       check_petsc(MatSetOption(copy, MAT_NEW_NONZERO_LOCATION_ERR, PETSC_TRUE),
                   "MatSetOption");
-    filled = true;
   }
 
   void

@@ -67,7 +67,5 @@ namespace DiskImpact
     PetscInt              block_size;
     std::vector<PetscInt> new_row;
     Mat                   copy = nullptr;
-    /// Whether the copy has had values (and so its pattern).
-    bool filled = false;
   };
 } // namespace DiskImpact
