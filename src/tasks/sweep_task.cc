@@ -476,11 +476,11 @@ namespace DiskImpact
     });
     on_root(communicator, [&]() { table.write(); });
     const auto &points = table.get_points();
-    // The fastest points first: a study's cost grows with the speed (its
-    // contact zone needs more levels), so the longest points start first
-    // and the short ones fill the ranks' ends (longest first: on the
-    // twenty-speed plane-stress curve the two fastest points take two
-    // thirds of the work, docs/impact.md). Every rank sorts alike.
+    // The fastest points first: their studies tend to take the most levels,
+    // so the long points start first and the short ones fill the ranks'
+    // ends (on the twenty-speed plane-stress curve the two fastest points
+    // take two thirds of the work; docs/impact-convergence.md, "Taking the
+    // fastest points first"). Every rank sorts alike.
     std::vector<int> pending;
     for (unsigned int i = 0; i < points.size(); ++i)
       if (points[i].status != "done")
