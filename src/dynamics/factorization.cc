@@ -105,12 +105,6 @@ namespace DiskImpact
     factorize(A);
   }
 
-  void
-  Factorization::refactorize(const PETScWrappers::MPI::SparseMatrix &A)
-  {
-    factorize(MatrixSum{{1., &A}});
-  }
-
   const PETScWrappers::MPI::SparseMatrix &
   Factorization::summed(const MatrixSum &A)
   {

@@ -60,8 +60,6 @@ namespace DiskImpact
     /// the numeric factorization only.
     void
     refactorize(const MatrixSum &A);
-    void
-    refactorize(const dealii::PETScWrappers::MPI::SparseMatrix &A);
 
     /// y = A^{-1} r. Collective.
     void
