@@ -24,6 +24,7 @@ namespace DiskImpact
                         const double       a,
                         const unsigned int n_across,
                         const double       grading,
+                        const double       fine_zone_radius,
                         const double       max_cells)
   {
     const double h_min = a / n_across;
@@ -43,7 +44,8 @@ namespace DiskImpact
               const double h = cell->diameter() / std::sqrt(2.);
               const double d =
                 std::max(0., cell->center().distance(contact_point) - h);
-              const double target = h_min + grading * std::max(0., d - 1.5 * a);
+              const double target =
+                h_min + grading * std::max(0., d - fine_zone_radius * a);
               if (h > target)
                 {
                   cell->set_refine_flag();

@@ -46,13 +46,18 @@ namespace DiskImpact
             f(cell, face);
   }
 
+  /// Radius of the zone of finest elements around the contact point, in
+  /// units of the contact half-width a, unless a task sets its own
+  /// (subsection Impact, 'Fine zone radius').
+  constexpr double default_fine_zone_radius = 1.5;
+
   /**
-   * Refine toward @p contact_point until every cell closer than 1.5 a has
-   * size <= a / n_across and, farther out, size <= a / n_across +
-   * grading (d - 1.5 a), d the distance to the contact point: the elements
-   * across the whole contact zone of half-width a, not only the smallest,
-   * resolve it. Throws an InputError if the mesh would exceed @p max_cells
-   * active cells.
+   * Refine toward @p contact_point until every cell closer than r a
+   * (r = @p fine_zone_radius) has size <= a / n_across and, farther out,
+   * size <= a / n_across + grading (d - r a), d the distance to the contact
+   * point: with r >= 1 the elements across the whole contact zone of
+   * half-width a, not only the smallest, resolve it. Throws an InputError if
+   * the mesh would exceed @p max_cells active cells.
    */
   void
   refine_toward_contact(
@@ -61,6 +66,7 @@ namespace DiskImpact
     double                    a,
     unsigned int              n_across,
     double                    grading,
+    double                    fine_zone_radius,
     double max_cells = std::numeric_limits<double>::infinity());
 
   /// The body: a disk (plane strain or plane stress) or a sphere (an

@@ -78,6 +78,17 @@ namespace DiskImpact
                       Patterns::Double(0.01, 1),
                       "Growth of the element size with distance from the "
                       "contact zone [-].");
+    prm.declare_entry("Fine zone radius",
+                      "1.5",
+                      Patterns::Double(0., 10.),
+                      "Radius of the zone around the contact point whose "
+                      "elements all have the finest size (the half-width "
+                      "over 'Elements across contact'), in units of the "
+                      "graded half-width [-]; beyond it the size grows by "
+                      "'Grading'. Below 1 the contact zone's edge lies in "
+                      "the growing elements, which quartic elements allow "
+                      "(docs/impact-convergence.md, \"A smaller fine "
+                      "zone\").");
     prm.declare_entry("Graded half-width",
                       "0",
                       Patterns::Double(0., 1.),
@@ -172,6 +183,7 @@ namespace DiskImpact
     impact_velocity         = prm.get_double("Velocity");
     elements_across_contact = prm.get_integer("Elements across contact");
     grading                 = prm.get_double("Grading");
+    fine_zone_radius        = prm.get_double("Fine zone radius");
     graded_half_width       = prm.get_double("Graded half-width");
     contact_law_constant    = prm.get("Contact law constant");
     margin                  = prm.get_double("Margin");
@@ -602,6 +614,7 @@ namespace DiskImpact
                           graded_width(parameters),
                           elements_across_contact,
                           grading,
+                          fine_zone_radius,
                           max_cells);
   }
 

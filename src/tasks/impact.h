@@ -1,5 +1,6 @@
 #pragma once
 
+#include "body/geometry.h"
 #include "reference/two_body_contact.h"
 
 #include <deal.II/base/parameter_handler.h>
@@ -217,6 +218,7 @@ namespace DiskImpact
     bool                resume_sweep            = true;
     unsigned int        elements_across_contact = 12;
     double              grading                 = 0.3;
+    double              fine_zone_radius        = default_fine_zone_radius;
     double              graded_half_width       = 0.;
     std::string         contact_law_constant    = "exact";
     double              margin                  = 0.2;

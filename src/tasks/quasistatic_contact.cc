@@ -369,6 +369,7 @@ namespace DiskImpact
                           a,
                           elements_across_contact,
                           grading,
+                          default_fine_zone_radius,
                           max_cells);
   }
 
