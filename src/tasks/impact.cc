@@ -79,7 +79,7 @@ namespace DiskImpact
                       "Growth of the element size with distance from the "
                       "contact zone [-].");
     prm.declare_entry("Fine zone radius",
-                      "1.5",
+                      Utilities::to_string(default_fine_zone_radius),
                       Patterns::Double(0., 10.),
                       "Radius of the zone around the contact point whose "
                       "elements all have the finest size (the half-width "

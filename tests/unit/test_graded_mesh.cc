@@ -28,6 +28,9 @@ namespace
       triangulation, geometry.contact_point(), a, 6, 0.6, r);
   }
 
+  /// The contact point of the half disk.
+  const dealii::Point<2> contact_point = half_disk(1).contact_point();
+
   /// The largest element size h (diameter / sqrt 2) among the cells whose
   /// centre lies within [@p from, @p to] of the contact point.
   double
@@ -38,7 +41,7 @@ namespace
     double largest = 0.;
     for (const auto &cell : triangulation.active_cell_iterators())
       {
-        const double distance = cell->center().distance(dealii::Point<2>());
+        const double distance = cell->center().distance(contact_point);
         if (distance >= from && distance <= to)
           largest = std::max(largest, cell->diameter() / std::sqrt(2.));
       }
@@ -72,7 +75,7 @@ TEST_CASE("the finest elements fill the fine zone and grow beyond it",
         {
           const double h = cell->diameter() / std::sqrt(2.);
           const double d =
-            std::max(0., cell->center().distance(dealii::Point<2>()) - h);
+            std::max(0., cell->center().distance(contact_point) - h);
           CHECK(h <= h_min + 0.6 * std::max(0., d - r * a) + 1e-12);
         }
     }
