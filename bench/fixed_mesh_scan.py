@@ -13,6 +13,11 @@ the residual's rms and largest value, the point-to-point scatter (the rms
 of the third differences over sqrt(20), the standard deviation of
 independent noise) and the largest jump between neighbouring speeds beyond
 the fitted trend (docs/impact-convergence.md, "epsilon on one mesh").
+Each run also reports how many DoFs its contact was condensed on (every DoF
+of the edge the contact ever reached); the speeds where that number grows,
+where the contact zone's largest extent reaches one more node of the edge,
+are printed, with the residual's largest Fourier components and the share
+of its power at the period of those nodes.
 
 usage: bench/fixed_mesh_scan.py --speeds 0.06 0.14 0.001 [--level 0]
            [--law penalty] [--penalty-factor 100] [--fraction F] [--scheme S]
@@ -24,6 +29,7 @@ import argparse
 import concurrent.futures
 import csv
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -76,11 +82,39 @@ def run(v, args, work):
                             grading=0.6 / (1 << args.level),
                             scheme=args.scheme, kappa=args.penalty_factor,
                             degree=args.degree))
-    subprocess.run([args.diskimpact, prm], check=True,
-                   stdout=subprocess.DEVNULL)
+    log = subprocess.run([args.diskimpact, prm], check=True,
+                         stdout=subprocess.PIPE, text=True).stdout
     with open(os.path.join(out, "summary.csv")) as f:
         row = next(csv.DictReader(f))
-    return v, float(row["epsilon"]), int(row["n_dofs"])
+    touched = re.search(r"(\d+) contact DoFs condensed", log)
+    return (v, float(row["epsilon"]), int(row["n_dofs"]),
+            int(touched.group(1)) if touched else 0)
+
+
+def print_residual_periods(v, residual, touched):
+    """The residual's three largest Fourier components over the evenly
+    spaced speeds (period and share of the power), the mean speed interval
+    between two edge nodes joining the contact, and the share of the power
+    within 1.5 harmonics of that interval: near 1 if each node's joining
+    makes the oscillation, near 0 if not."""
+    power = np.abs(np.fft.rfft(residual - residual.mean())) ** 2
+    harmonic = np.arange(len(power))
+    span = (v[-1] - v[0]) * len(v) / (len(v) - 1)
+    largest = [k for k in np.argsort(power)[::-1] if k > 0][:3]
+    print("  largest Fourier components of the residual: " +
+          ", ".join(f"period {span / k:.3g} c ({power[k] / power.sum():.2f})"
+                    for k in largest))
+    joins = v[1:][np.diff(touched) != 0]
+    if len(joins) < 2:
+        return
+    period = np.diff(joins).mean()
+    if period < 2. * (v[1] - v[0]):
+        print(f"  one edge node per {period:.3g} c on average: shorter than two "
+              "speed steps, so its share of the residual is not resolved")
+        return
+    near = np.abs(harmonic - span / period) <= 1.5
+    print(f"  one edge node per {period:.3g} c on average; share of the residual's "
+          f"power within 1.5 harmonics of that period: {power[near].sum() / power.sum():.2f}")
 
 
 def main():
@@ -109,7 +143,8 @@ def main():
     parser.add_argument("--jobs", type=int, default=2)
     parser.add_argument("--diskimpact",
                         default=os.path.join(ROOT, "build", "diskimpact"))
-    parser.add_argument("-o", "--output", help="CSV: v, epsilon, residual")
+    parser.add_argument("-o", "--output",
+                        help="CSV: v, epsilon, residual, contact DoFs")
     args = parser.parse_args()
     if args.fraction is None:
         args.fraction = 0.01 / (1 << args.level)
@@ -125,6 +160,7 @@ def main():
     v = np.array([r[0] for r in rows])
     eps = np.array([r[1] for r in rows])
     dofs = {r[2] for r in rows}
+    touched = np.array([r[3] for r in rows])
     if len(dofs) != 1:
         sys.exit("fixed_mesh_scan: the mesh changed with the speed "
                  f"({sorted(dofs)} DoFs)")
@@ -141,15 +177,21 @@ def main():
     k = int(np.argmax(np.abs(jumps)))
     print(f"  largest jump between neighbours beyond the trend: {jumps[k]:+.2e} "
           f"(v = {v[k]:.9g} to {v[k + 1]:.9g}: epsilon {eps[k]:.8f}, {eps[k + 1]:.8f})")
+    grows = [f"{v[i + 1]:.9g} ({touched[i]} to {touched[i + 1]})"
+             for i in np.flatnonzero(np.diff(touched))]
+    print(f"  contact DoFs: {touched[0]} at the first speed; one more edge node "
+          f"reached at v = {', '.join(grows) if grows else 'none'}")
+    print_residual_periods(v, residual, touched)
     if args.print:
-        for row in zip(v, eps, residual):
-            print(f"  v = {row[0]:.9g}: epsilon = {row[1]:.8f}, residual {row[2]:+.2e}")
+        for row in zip(v, eps, residual, touched):
+            print(f"  v = {row[0]:.9g}: epsilon = {row[1]:.8f}, residual {row[2]:+.2e}, "
+                  f"contact DoFs {row[3]}")
     if args.output:
         with open(args.output, "w", newline="") as f:
             writer = csv.writer(f)
-            writer.writerow(["velocity", "epsilon", "residual"])
-            for row in zip(v, eps, residual):
-                writer.writerow([f"{row[0]:.9g}", f"{row[1]:.12g}", f"{row[2]:.6e}"])
+            writer.writerow(["velocity", "epsilon", "residual", "contact_dofs"])
+            for row in zip(v, eps, residual, touched):
+                writer.writerow([f"{row[0]:.9g}", f"{row[1]:.12g}", f"{row[2]:.6e}", row[3]])
 
 
 if __name__ == "__main__":
