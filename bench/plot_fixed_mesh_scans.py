@@ -41,6 +41,7 @@ def main():
             touched = np.array([int(r["contact_dofs"]) for r in rows])
             for k in np.flatnonzero(np.diff(touched)):
                 ax.axvline(0.5 * (v[k] + v[k + 1]), color="tab:red", lw=0.6)
+    for (ax,) in axes:
         ax.axhline(0., color="grey", lw=0.5)
         ax.set_ylabel("ε − fit  [1e-5]" if args.nodes
                       else f"ε − degree-{args.fit_degree} fit  [1e-5]")
