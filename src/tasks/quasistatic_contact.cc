@@ -5,6 +5,7 @@
 #include "base/parameters.h"
 #include "base/run_error.h"
 #include "contact/contact_operator.h"
+#include "dynamics/factorization.h"
 #include "elasticity/elasticity_operator.h"
 #include "output/atomic_file.h"
 #include "output/csv_table.h"
@@ -22,8 +23,6 @@
 #include <deal.II/base/utilities.h>
 
 #include <deal.II/distributed/tria.h>
-
-#include <deal.II/lac/petsc_solver.h>
 
 #include <deal.II/numerics/vector_tools.h>
 
@@ -170,17 +169,25 @@ namespace DiskImpact
                                  du      = op.create_vector(),
                                  trial   = op.create_vector();
       const double force_scale           = body_force.l2_norm();
+
+      std::unique_ptr<Factorization> tangent;
       residual(solution, r, true);
       for (iterations = 0; iterations < max_iterations; ++iterations)
         {
           if (r.l2_norm() <= tolerance * force_scale)
             return iterations;
-          // Newton step with the consistent tangent (residual() left it).
-          SolverControl                    control;
-          PETScWrappers::SparseDirectMUMPS direct(control, communicator);
-          direct.set_symmetric_mode(true);
+          // Newton step with the consistent tangent (residual() left it),
+          // factorized as the impact's matrices are; its pattern stays, so
+          // after the first step only the numeric factorization is redone.
+          if (!tangent)
+            tangent = std::make_unique<Factorization>(
+              op.tangent_matrix(),
+              communicator,
+              op.get_dof_handler().get_fe().n_components());
+          else
+            tangent->refactorize({{1., &op.tangent_matrix()}});
           r *= -1.;
-          direct.solve(op.tangent_matrix(), du, r);
+          tangent->solve(r, du);
           r *= -1.;
           op.get_constraints().distribute(du);
 
