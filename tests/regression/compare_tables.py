@@ -1,12 +1,10 @@
 #!/usr/bin/python3
 """Two result tables (CSV) of the same run on different numbers of MPI ranks
 hold the same numbers: every numeric column, or the columns given, agree to
-a tolerance relative to max(|a|, |b|, floor); with --absolute A, a
-difference of at most A counts as none (quantities that are zero but for
-round-off, such as an overlap of 1e-10 or an energy of 1e-11).
+a tolerance relative to max(|a|, |b|, floor).
 
 usage: compare_tables.py A.csv B.csv TOL [--columns c1,c2,...]
-                         [--ignore c1,c2,...] [--floor F] [--absolute A]
+                         [--ignore c1,c2,...] [--floor F]
 The timing columns (wall_time) are ignored always.
 """
 import argparse
@@ -34,7 +32,6 @@ p.add_argument("tol", type=float)
 p.add_argument("--columns", default="")
 p.add_argument("--ignore", default="")
 p.add_argument("--floor", type=float, default=1e-300)
-p.add_argument("--absolute", type=float, default=0.)
 args = p.parse_args()
 
 a, b = rows(args.a), rows(args.b)
@@ -54,8 +51,6 @@ for i, (ra, rb) in enumerate(zip(a, b)):
             continue
         if x == y or (math.isnan(x) and math.isnan(y)):
             continue  # equal, infinities included
-        if abs(x - y) <= args.absolute:
-            continue
         d = abs(x - y) / max(abs(x), abs(y), args.floor)
         if not d <= worst:
             worst, where = d, (i, c, x, y)
