@@ -21,10 +21,16 @@ import numpy as np
 
 def read_table(path):
     """Speeds (rounded to 1e-9, so that tables can be matched) and epsilon."""
-    with open(path, newline="") as f:
-        rows = list(csv.DictReader(f))
+    try:
+        with open(path, newline="") as f:
+            rows = list(csv.DictReader(f))
+    except OSError as error:
+        sys.exit(f"residual_correlation: cannot read {path}: {error.strerror}")
+    if not rows or not {"velocity", "epsilon"} <= set(rows[0]):
+        sys.exit(f"residual_correlation: {path} has no rows with the columns "
+                 "velocity and epsilon")
     for column in ("alpha", "n_modes"):
-        if rows and column in rows[0] and len({r[column] for r in rows}) > 1:
+        if column in rows[0] and len({r[column] for r in rows}) > 1:
             sys.exit(f"residual_correlation: {path} holds several values of "
                      f"{column}; give a table of one")
     return {round(float(r["velocity"]), 9): float(r["epsilon"]) for r in rows}
