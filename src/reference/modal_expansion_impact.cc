@@ -309,16 +309,21 @@ namespace DiskImpact
             }
         }
 
-      result.epsilon      = -state.v / v0;
-      result.contact_time = contact_end - contact_start;
+      // A stiff wall and a fast impact can keep the elastic disk's force
+      // below the threshold, a fraction of the rigid disk's peak: then the
+      // run has no contact window, and neither a contact time nor averages.
+      const double not_measured = std::numeric_limits<double>::quiet_NaN();
+      const bool   window       = contact_start >= 0. && contact_end >= 0.;
+      result.epsilon            = -state.v / v0;
+      result.contact_time = window ? contact_end - contact_start : not_measured;
       for (unsigned int k = 0; k < N; ++k)
         result.modes.push_back(
           {shapes[k].label(),
            omega[k],
            modal_energy(state, k) / kinetic0,
-           time_in_contact > 0. ?
+           window && time_in_contact > 0. ?
              energy_in_contact[k] / time_in_contact / kinetic0 :
-             0.});
+             not_measured});
       return result;
     }
   } // namespace Reference

@@ -53,16 +53,18 @@ namespace DiskImpact
     struct ModeEnergy
     {
       ModeLabel label;
-      double    omega          = 0.;
-      double    energy_after   = 0.; ///< after the collision
-      double    average_energy = 0.; ///< time average over the contact
+      double    omega        = 0.;
+      double    energy_after = 0.; ///< after the collision
+      /// Time average over the contact; NaN without a contact window.
+      double average_energy = 0.;
     };
 
     /// Outcome of a modal-expansion collision.
     struct ModalImpactResult
     {
-      double       epsilon      = 0.; ///< -v_com after / v before
-      double       contact_time = 0.; ///< time with force above the threshold
+      double epsilon = 0.; ///< -v_com after / v before
+      /// Time with the force above the threshold; NaN if it never was.
+      double       contact_time = 0.;
       double       max_force    = 0.; ///< largest wall force on the disk
       double       energy_error = 0.; ///< max |H(t) - H(0)| / H(0)
       double       time_step    = 0.;

@@ -47,6 +47,25 @@ namespace DiskImpact
       Reference::ModeFamily::torsional,
       Reference::ModeFamily::mixed};
 
+    /// Runs whose wall force never exceeded the contact threshold have no
+    /// contact time (NaN, an empty cell): say how many.
+    void
+    report_runs_without_window(const std::vector<double> &fields,
+                               const unsigned int         per_run,
+                               const std::size_t          n_runs,
+                               ConditionalOStream        &out)
+    {
+      unsigned int without = 0;
+      for (std::size_t i = 0; i < n_runs; ++i)
+        without += std::isnan(fields[per_run * i + 1]) ? 1 : 0;
+      if (without > 0)
+        out << "  " << without << " of " << n_runs
+            << " runs had no contact window (the wall force stayed below 1 % "
+               "of the rigid disk's peak force): their contact_time and "
+               "average_energy_fraction are left empty, and their modes are "
+               "ranked by the energy after the collision\n";
+    }
+
     std::vector<double>
     pack(const Reference::ModalImpactResult &r,
          const double                        seconds,
@@ -59,10 +78,16 @@ namespace DiskImpact
                                  r.time_step,
                                  static_cast<double>(r.steps),
                                  seconds};
-      auto                modes = r.modes;
-      std::sort(modes.begin(), modes.end(), [](const auto &a, const auto &b) {
-        return a.average_energy > b.average_energy;
-      });
+      // Ranked by the average over the contact; by the energy after it
+      // where the run had no contact window (averages NaN).
+      const bool window = std::isfinite(r.contact_time);
+      auto       modes  = r.modes;
+      std::sort(modes.begin(),
+                modes.end(),
+                [window](const auto &a, const auto &b) {
+                  return window ? a.average_energy > b.average_energy :
+                                  a.energy_after > b.energy_after;
+                });
       modes.resize(std::min<std::size_t>(modes.size(), mode_rows));
       for (const auto &m : modes)
         for (const double value :
@@ -217,7 +242,8 @@ namespace DiskImpact
                       Patterns::Integer(0, 100),
                       "Modes listed in modal_expansion_modes.csv per run "
                       "with the largest N, by average energy during the "
-                      "collision [-].");
+                      "collision (by the energy after it where the run had "
+                      "no contact window) [-].");
     prm.leave_subsection();
   }
 
@@ -388,6 +414,7 @@ namespace DiskImpact
                 modes.add(mode[k]);
             }
         }
+      report_runs_without_window(fields, per_run, runs.size(), pcout);
       table.write(directory + "modal_expansion.csv");
       modes.write(directory + "modal_expansion_modes.csv");
       write_extrapolation(by_case,

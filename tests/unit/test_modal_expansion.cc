@@ -5,6 +5,7 @@
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -246,4 +247,31 @@ TEST_CASE("Vibrations take energy; more modes soften the collision",
   // seed 001, section 4: eps rises towards 1 with the number of modes
   CHECK(one < five);
   CHECK(five < forty);
+}
+
+TEST_CASE("A wall force below the contact threshold leaves no contact window",
+          "[modal expansion]")
+{
+  // The threshold is 1 % of the rigid disk's peak force alpha m v^2 / 2R.
+  // A stiff wall and a fast impact keep the elastic disk's force below it:
+  // the collision happens, but it has no contact time and no averages.
+  ModalImpactConfig config;
+  config.in_plane_poisson_ratio = 0.9;
+  config.n_modes                = 800;
+  config.velocity               = 0.5;
+  config.alpha                  = 1000.;
+  const auto result             = ModalExpansionImpact(config).run();
+  CHECK(result.separated);
+  CHECK(result.epsilon > 0.5);
+  CHECK(result.epsilon < 1.);
+  CHECK(result.max_force < 0.01 * config.alpha * 0.5 * M_PI * 0.25);
+  CHECK(std::isnan(result.contact_time));
+  const auto count = [&](auto &&predicate) {
+    return std::count_if(result.modes.begin(), result.modes.end(), predicate);
+  };
+  CHECK(result.modes.size() == 800);
+  CHECK(count([](const auto &m) { return std::isnan(m.average_energy); }) ==
+        800);
+  CHECK(count([](const auto &m) { return std::isfinite(m.energy_after); }) ==
+        800);
 }
