@@ -21,6 +21,8 @@ import sys
 
 import numpy as np
 
+from residual_correlation import read_table, residual
+
 
 def read_rows(path):
     try:
@@ -37,24 +39,18 @@ def main():
     parser.add_argument("--most", type=int, default=10,
                         help="modes printed, largest share first")
     args = parser.parse_args()
-    runs = read_rows(os.path.join(args.directory, "modal_expansion.csv"))
-    if len({(r["alpha"], r["n_modes"]) for r in runs}) != 1:
-        sys.exit("residual_by_mode: give the output of one potential "
-                 "stiffness and one mode count")
-    speeds = np.array([round(float(r["velocity"]), 9) for r in runs])
-    eps = np.array([float(r["epsilon"]) for r in runs])
+    epsilon = read_table(os.path.join(args.directory, "modal_expansion.csv"))
+    speeds = np.array(sorted(epsilon))
     if len(speeds) < args.fit_degree + 2:
         sys.exit(f"residual_by_mode: {len(speeds)} speeds are too few")
+    eps = np.array([epsilon[v] for v in speeds])
     energies = collections.defaultdict(dict)
     for r in read_rows(os.path.join(args.directory, "modal_expansion_modes.csv")):
         label = f"({r['n']}, {r['l']}) {r['family']}, omega {float(r['omega']):.3f}"
         energies[label][round(float(r["velocity"]), 9)] = float(r["energy_fraction"])
 
-    def residual(values):
-        return values - np.polynomial.Polynomial.fit(speeds, values, args.fit_degree)(speeds)
-
-    target = residual(eps)
-    parts = {label: -residual(np.array([e[v] for v in speeds])) / (2. * eps)
+    target = residual(epsilon, speeds, args.fit_degree)
+    parts = {label: -residual(e, speeds, args.fit_degree) / (2. * eps)
              for label, e in energies.items() if all(v in e for v in speeds)}
     if not parts:
         sys.exit("residual_by_mode: no mode is listed at every speed")

@@ -321,9 +321,8 @@ namespace DiskImpact
           {shapes[k].label(),
            omega[k],
            modal_energy(state, k) / kinetic0,
-           window && time_in_contact > 0. ?
-             energy_in_contact[k] / time_in_contact / kinetic0 :
-             not_measured});
+           window ? energy_in_contact[k] / time_in_contact / kinetic0 :
+                    not_measured});
       return result;
     }
   } // namespace Reference

@@ -38,8 +38,9 @@ namespace DiskImpact
     /// Numbers per run: epsilon, contact time, force, energy error, time
     /// step, steps, wall time, then per listed mode n, l, family, omega,
     /// energy after, average energy.
-    constexpr unsigned int n_run_fields  = 7;
-    constexpr unsigned int n_mode_fields = 6;
+    constexpr unsigned int n_run_fields       = 7;
+    constexpr unsigned int contact_time_field = 1;
+    constexpr unsigned int n_mode_fields      = 6;
 
     const std::vector<Reference::ModeFamily> families{
       Reference::ModeFamily::rigid,
@@ -57,7 +58,7 @@ namespace DiskImpact
     {
       unsigned int without = 0;
       for (std::size_t i = 0; i < n_runs; ++i)
-        without += std::isnan(fields[per_run * i + 1]) ? 1 : 0;
+        without += std::isnan(fields[per_run * i + contact_time_field]) ? 1 : 0;
       if (without > 0)
         out << "  " << without << " of " << n_runs
             << " runs had no contact window (the wall force stayed below 1 % "
