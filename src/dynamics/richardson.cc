@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
 #include <tuple>
 #include <utility>
@@ -38,11 +40,45 @@ namespace DiskImpact
       std::vector<double> orders;
       for (std::size_t end = n - 3; end < n; ++end)
         orders.push_back(triple_order(values, end, ratio));
-      const double mean = (orders[0] + orders[1] + orders[2]) / 3.;
+      const double mean    = (orders[0] + orders[1] + orders[2]) / 3.;
       double       scatter = 0.;
       for (const double p : orders)
         scatter = std::max(scatter, std::abs(p - mean));
       return std::isnan(mean) ? mean : scatter;
+    }
+
+    /// Why the sequence @p values, whose last triple has the observed
+    /// @p order and whose last three triples scatter by @p scatter, is
+    /// not clean.
+    std::string
+    not_clean_because(const std::vector<double> &values,
+                      const double               order,
+                      const double               scatter,
+                      const double               expected_order)
+    {
+      const std::size_t  n = values.size();
+      std::ostringstream why;
+      why << std::setprecision(2);
+      const double d1 = n < 3 ? 0. : values[n - 2] - values[n - 3];
+      const double d2 = values[n - 1] - values[n - 2];
+      if (n >= 3 && d1 * d2 < 0.)
+        why << std::scientific << "the last two differences change sign (" << d1
+            << ", " << d2 << ")";
+      else if (n >= 3 && !(std::abs(d2) < std::abs(d1)))
+        why << std::scientific << "the last difference (" << d2
+            << ") is not smaller than the one before (" << d1 << ")";
+      else if (n < 5)
+        why << n << " levels; a verified order needs 5 (three level triples)";
+      else if (std::isnan(scatter))
+        why << "an earlier triple of the last five levels does not converge "
+               "monotonically";
+      else if (scatter > clean_order_scatter)
+        why << std::fixed << "the orders of the last three triples scatter by "
+            << scatter << " > " << clean_order_scatter;
+      else
+        why << std::fixed << "the observed order " << order
+            << " is not within a factor 2 of the expected " << expected_order;
+      return why.str();
     }
   } // namespace
 
@@ -63,14 +99,14 @@ namespace DiskImpact
     const double d1        = n < 3 ? 0. : values[n - 2] - values[n - 3];
     estimate.error         = 3. * std::max(std::abs(d1), std::abs(d2)) /
                      (std::pow(ratio, expected_order) - 1.);
-    if (n < 3 || d2 == 0.)
-      return estimate;
-
-    const double q = d1 / d2;
+    const double q     = n < 3 || d2 == 0. ? 0. : d1 / d2;
+    const double order = q > 1. ? std::log(q) / std::log(ratio) :
+                                  std::numeric_limits<double>::quiet_NaN();
+    estimate.not_clean_because =
+      not_clean_because(values, order, estimate.order_scatter, expected_order);
     if (!(q > 1.))
       return estimate;
     // Monotone convergence: the last difference alone bounds the rest.
-    const double order = std::log(q) / std::log(ratio);
     if (order > 2. * expected_order)
       {
         estimate.error =
@@ -81,10 +117,11 @@ namespace DiskImpact
     if (order < 0.5 * expected_order ||
         !(estimate.order_scatter <= clean_order_scatter))
       return estimate;
-    estimate.clean        = true;
-    estimate.order        = order;
-    estimate.extrapolated = values[n - 1] + d2 / (q - 1.);
-    estimate.error        = 1.25 * std::abs(d2) / (q - 1.);
+    estimate.clean             = true;
+    estimate.not_clean_because = "";
+    estimate.order             = order;
+    estimate.extrapolated      = values[n - 1] + d2 / (q - 1.);
+    estimate.error             = 1.25 * std::abs(d2) / (q - 1.);
     return estimate;
   }
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <string>
 #include <vector>
 
 namespace DiskImpact
@@ -15,6 +16,9 @@ namespace DiskImpact
     /// non-monotone sequence).
     double order_scatter = 0.;
     bool   clean         = false;
+    /// Why the sequence was not extrapolated, in a few words (empty if
+    /// it was clean).
+    std::string not_clean_because;
   };
 
   /// How far the observed orders of the last three triples may lie from

@@ -650,17 +650,7 @@ namespace DiskImpact
     std::string
     why_not_clean(const RichardsonEstimate &e)
     {
-      if (e.clean)
-        return "";
-      std::ostringstream why;
-      if (std::isnan(e.order_scatter))
-        why << "  (not extrapolated: no three monotone level triples)";
-      else
-        why << "  (not extrapolated: the orders of the last three triples "
-               "scatter by "
-            << std::fixed << std::setprecision(2) << e.order_scatter << " > "
-            << clean_order_scatter << ")";
-      return why.str();
+      return e.clean ? "" : "  (not extrapolated: " + e.not_clean_because + ")";
     }
   } // namespace
 

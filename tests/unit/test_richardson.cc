@@ -110,3 +110,40 @@ TEST_CASE("linear extrapolation: exact on a line, the error bar sees a bend",
   CHECK(bent.residual > 0.);
   CHECK(std::abs(bent.limit - 0.95) <= bent.error);
 }
+
+TEST_CASE("Richardson: the run says why a sequence is not clean",
+          "[richardson]")
+{
+  auto because = [](const std::vector<double> &values) {
+    return richardson_estimate(values, 2., 2.).not_clean_because;
+  };
+  using Catch::Matchers::Contains;
+  // Five values of f(h) = 1 + 0.3 h^2 + 0.1 h^3: clean, no reason.
+  std::vector<double> smooth;
+  for (const double h : {1., 0.5, 0.25, 0.125, 0.0625})
+    smooth.push_back(1. + 0.3 * h * h + 0.1 * h * h * h);
+  CHECK(because(smooth).empty());
+  // Its first three: too few levels to verify the order.
+  CHECK_THAT(because({smooth[0], smooth[1], smooth[2]}),
+             Contains("3 levels; a verified order needs 5"));
+  CHECK_THAT(because({1., 1.2}), Contains("2 levels"));
+  // The last differences +0.2, -0.1: a sign change, with both differences.
+  CHECK_THAT(because({1.0, 1.2, 1.1}),
+             Contains("change sign (2.00e-01, -1.00e-01)"));
+  // Differences -4.9e-6, -1.69e-4 (the shipped study's three levels): the
+  // last one grows.
+  CHECK_THAT(because({0.94722248, 0.94721755, 0.94704867}),
+             Contains("is not smaller than the one before"));
+  // Five values whose first triple oscillates: the last triple alone is
+  // monotone, the scatter undefined.
+  CHECK_THAT(because({1.0, 0.9, 1.1, 1.15, 1.1625}),
+             Contains("an earlier triple"));
+  // Triple orders 2, 1, 2: the scatter 0.67 is named.
+  CHECK_THAT(because({1., 1.1, 1.125, 1.1375, 1.140625}),
+             Contains("scatter by 0.67 > 0.25"));
+  // Orders 5, 5, 5 against the expected 2: the order is named.
+  std::vector<double> fast;
+  for (const double h : {1., 0.5, 0.25, 0.125, 0.0625})
+    fast.push_back(1. + std::pow(h, 5.));
+  CHECK_THAT(because(fast), Contains("observed order 5.00 is not within"));
+}
