@@ -47,20 +47,19 @@ namespace DiskImpact
       return std::isnan(mean) ? mean : scatter;
     }
 
-    /// Why the sequence @p values, whose last triple has the observed
-    /// @p order and whose last three triples scatter by @p scatter, is
-    /// not clean.
+    /// Why a sequence of @p n values with last differences @p d1, @p d2,
+    /// whose last triple has the observed @p order and whose last three
+    /// triples scatter by @p scatter, is not clean.
     std::string
-    not_clean_because(const std::vector<double> &values,
-                      const double               order,
-                      const double               scatter,
-                      const double               expected_order)
+    not_clean_because(const std::size_t n,
+                      const double      d1,
+                      const double      d2,
+                      const double      order,
+                      const double      scatter,
+                      const double      expected_order)
     {
-      const std::size_t  n = values.size();
       std::ostringstream why;
       why << std::setprecision(2);
-      const double d1 = n < 3 ? 0. : values[n - 2] - values[n - 3];
-      const double d2 = values[n - 1] - values[n - 2];
       if (n >= 3 && d1 * d2 < 0.)
         why << std::scientific << "the last two differences change sign (" << d1
             << ", " << d2 << ")";
@@ -99,11 +98,11 @@ namespace DiskImpact
     const double d1        = n < 3 ? 0. : values[n - 2] - values[n - 3];
     estimate.error         = 3. * std::max(std::abs(d1), std::abs(d2)) /
                      (std::pow(ratio, expected_order) - 1.);
-    const double q     = n < 3 || d2 == 0. ? 0. : d1 / d2;
-    const double order = q > 1. ? std::log(q) / std::log(ratio) :
-                                  std::numeric_limits<double>::quiet_NaN();
-    estimate.not_clean_because =
-      not_clean_because(values, order, estimate.order_scatter, expected_order);
+    const double q             = n < 3 || d2 == 0. ? 0. : d1 / d2;
+    const double order         = q > 1. ? std::log(q) / std::log(ratio) :
+                                          std::numeric_limits<double>::quiet_NaN();
+    estimate.not_clean_because = not_clean_because(
+      n, d1, d2, order, estimate.order_scatter, expected_order);
     if (!(q > 1.))
       return estimate;
     // Monotone convergence: the last difference alone bounds the rest.

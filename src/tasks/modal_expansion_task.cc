@@ -61,8 +61,9 @@ namespace DiskImpact
         without += std::isnan(fields[per_run * i + contact_time_field]) ? 1 : 0;
       if (without > 0)
         out << "  " << without << " of " << n_runs
-            << " runs had no contact window (the wall force stayed below 1 % "
-               "of the rigid disk's peak force): their contact_time and "
+            << " runs had no contact window (the wall force stayed below "
+            << 100. * Reference::ModalImpactConfig().contact_threshold
+            << " % of the rigid disk's peak force): their contact_time and "
                "average_energy_fraction are left empty, and their modes are "
                "ranked by the energy after the collision\n";
     }
