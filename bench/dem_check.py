@@ -7,7 +7,7 @@ Runs a head-on collision of two such spheres (equivalent to the rigid
 wall) with bench/dem_collision.py:
   LIGGGHTS, dem/liggghts.txt (Hertz, constant epsilon): at the reference
             speed and at the smallest and largest speed of the table;
-  LAMMPS,   dem/lammps.txt (Hertz with viscoelastic damping, seed 003's
+  LAMMPS,   dem/lammps.txt (Hertz with viscoelastic damping, Ramírez et al.'s
             law with the fitted A): at every speed of the table;
   Yade,     dem/yade.py (ViscElMat, a linear spring-dashpot: constant
             epsilon and contact time): as LIGGGHTS, if yade is installed

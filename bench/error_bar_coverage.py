@@ -52,7 +52,7 @@ def study(diskimpact, template, velocity, directory, levels=None, halvings=0):
     text = open(os.path.join(ROOT, template)).read()
     text = re.sub(r"set Task\s*=\s*sweep", "set Task = impact convergence", text)
     text = re.sub(r"set Velocities\s*=.*", f"set Velocity = {velocity}", text)
-    text = re.sub(r"\n\s*set Error estimate\s*=.*", "", text)
+    text = re.sub(r"\n\s*set (?:Error estimate|Convergence study per point)\s*=.*", "", text)
     if levels is not None:
         text = re.sub(r"set Mesh levels\s*=\s*\d+", f"set Mesh levels = {levels}", text)
         text = re.sub(r"set Target error\s*=.*", "set Target error = 0", text)

@@ -43,7 +43,7 @@ BASE = {
     "Material": {"Plane model": "plane stress", "Poisson ratio": "0.33"},
     "Contact": {"Penalty factor": "100"},
     "Impact": {"Velocity": "0.1", "Elements across contact": "6",
-               "Grading": "0.6", "Mode energies": "0",
+               "Grading": "0.6", "Number of projected modes": "0",
                "Output interval": "0"},
     "Time stepping": {"Time step fraction": "0.01"},
 }

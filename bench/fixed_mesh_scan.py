@@ -62,7 +62,7 @@ subsection Impact
   set Grading                 = {grading}
   set Graded half-width       = {width}
   set Output interval         = 0
-  set Mode energies           = 0
+  set Number of projected modes = 0
 end
 subsection Time stepping
   set Scheme             = {scheme}

@@ -38,7 +38,7 @@ subsection Impact
   set Elements across contact = $el
   set Grading                 = $grading
   set Output interval         = 0
-  set Mode energies           = 0
+  set Number of projected modes = 0
 end
 subsection Time stepping
   set Time step fraction = $fraction

@@ -15,7 +15,7 @@ declare -A seconds epsilon
 for ranks in 1 2; do
   sed -e "s|output/impact|$work/out_$ranks|" \
       -e "s|set Global refinements .*=.*|set Global refinements = $refinements|" \
-      -e "s|set Output interval .*=.*|set Output interval = 0\n  set Mode energies = 0|" \
+      -e "s|set Output interval .*=.*|set Output interval = 0\n  set Number of projected modes = 0|" \
       params/impact.prm > "$work/$ranks.prm"
   start=$(date +%s%N)
   mpirun -q -np "$ranks" build/diskimpact "$work/$ranks.prm" > "$work/log_$ranks"

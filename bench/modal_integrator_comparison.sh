@@ -24,7 +24,7 @@ subsection Modal expansion
   set Mode counts = $1
   set Integrator = $3
   set Steps per period = $4
-  set Mode energies = 0
+  set Number of listed modes = 0
 end
 PRM
   build/diskimpact "$work/run.prm" > /dev/null

@@ -11,7 +11,7 @@ on one mesh").
 
 usage: bench/residual_by_mode.py DIRECTORY [--fit-degree 6] [--most 10]
        (DIRECTORY: the output of a 'modal expansion impact' run of one
-        potential stiffness and one mode count, 'Mode energies' = 100)
+        potential stiffness and one mode count, 'Number of listed modes' = 100)
 """
 import argparse
 import collections

@@ -29,7 +29,7 @@ def read_table(path):
     if not rows or not {"velocity", "epsilon"} <= set(rows[0]):
         sys.exit(f"residual_correlation: {path} has no rows with the columns "
                  "velocity and epsilon")
-    for column in ("alpha", "n_modes"):
+    for column in ("potential_stiffness", "n_modes"):
         if column in rows[0] and len({r[column] for r in rows}) > 1:
             sys.exit(f"residual_correlation: {path} holds several values of "
                      f"{column}; give a table of one")

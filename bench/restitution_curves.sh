@@ -16,7 +16,7 @@ trap 'rm -rf "$work"' EXIT
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 speeds=$(/usr/bin/python3 -c "print(', '.join(f'{0.005 * 60 ** (i / 19):.6g}' for i in range(20)))")
 sed -e "s|output/impact|$work/impact|" -e "s|set Output interval .*=.*|set Output interval = 0|" \
-    -e "s|^\( *set Velocity *=.*\)|\1\n  set Mode energies = 0|" params/impact.prm > "$work/impact.prm"
+    -e "s|^\( *set Velocity *=.*\)|\1\n  set Number of projected modes = 0|" params/impact.prm > "$work/impact.prm"
 build/diskimpact "$work/impact.prm" | /usr/bin/python3 -c '
 import re, sys
 log = sys.stdin.read()

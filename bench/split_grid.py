@@ -39,7 +39,7 @@ def study_on_mesh_level(diskimpact, template, velocity, m, time_levels, director
         text = re.sub(rf"(set {name}\s*=\s*)(\S+)", lambda g: g[1] + change(g[2]), text)
     text = re.sub(r"set Task\s*=.*", "set Task = impact convergence", text)
     text = re.sub(r"set Velocities\s*=.*", f"set Velocity = {velocity}", text)
-    text = re.sub(r"\n\s*set (Error estimate|Target error|Largest mesh levels|"
+    text = re.sub(r"\n\s*set (Error estimate|Convergence study per point|Target error|Largest mesh levels|"
                   r"Separate time step error|Largest time step halvings)\s*=.*", "", text)
     text = re.sub(r"set Mesh levels\s*=.*",
                   f"set Mesh levels = 1\n  set Time step levels = {time_levels}", text)

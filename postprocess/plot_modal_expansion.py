@@ -4,10 +4,11 @@ extrapolations beside the FE penalty results (task 'sweep'):
 
 1. epsilon(v) for each nu2: the modal expansion extrapolated to all modes
    and hard contact (modal_extrapolation.csv, rows 'stiffness'), the FE
-   penalty sweeps (restitution.csv), and the value read from seed 001's
+   penalty sweeps (restitution.csv), and the value read from Gerl & Zippelius'
    Fig. 1 (0.65 at nu2 = 0.9, v = 0.3c);
-2. epsilon against 1/sqrt(N) for each alpha with the N fits, at one (nu2, v);
-3. the N limits against 1/alpha with the alpha fit, at the same (nu2, v).
+2. epsilon against 1/sqrt(N) for each stiffness s of the wall potential
+   with the N fits, at one (nu2, v);
+3. the N limits against 1/s with the fit in 1/s, at the same (nu2, v).
 
 usage: plot_modal_expansion.py DIR [--fe restitution.csv ...]
            [--nu2 0.33] [--velocity 0.1] [-o modal_expansion.png]
@@ -23,12 +24,17 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
-SEED_FIG_1 = [(0.9, 0.3, 0.65)]  # (nu2, v/c, epsilon) readable from Fig. 1
+GERL_ZIPPELIUS_FIG_1 = [(0.9, 0.3, 0.65)]  # (nu2, v/c, epsilon) readable from Fig. 1
 
 
 def read(path):
-    return [{k: float(v) if k != "limit" else v for k, v in r.items()}
+    """The rows of a CSV file, numbers as floats; the potential's stiffness
+    as "s" (column potential_stiffness, or alpha in older tables)."""
+    rows = [{k: float(v) if k != "limit" else v for k, v in r.items()}
             for r in csv.DictReader(open(path))]
+    for r in rows:
+        r["s"] = r.get("potential_stiffness", r.get("alpha"))
+    return rows
 
 
 p = argparse.ArgumentParser()
@@ -50,7 +56,7 @@ for nu2 in sorted({r["poisson_ratio_2d"] for r in fits}):
     if hard:
         v, eps, err = zip(*hard)
         ax.errorbar(v, eps, yerr=err, fmt="o-", capsize=3, ms=4,
-                    label=f"modal expansion, alpha, N -> inf, nu2 = {nu2:g}")
+                    label=f"modal expansion, s, N -> inf, nu2 = {nu2:g}")
 for path in a.fe:
     rows = list(csv.DictReader(open(path)))
     for nu2 in sorted({float(r["poisson_ratio_2d"]) for r in rows}):
@@ -60,8 +66,8 @@ for path in a.fe:
         v, eps, err = zip(*sel)
         ax.errorbar(v, eps, yerr=err, fmt="s--", capsize=3, ms=4,
                     label=f"FE penalty, nu2 = {nu2:g}")
-for nu2, v, eps in SEED_FIG_1:
-    ax.plot([v], [eps], "k*", ms=10, label=f"seed 001 Fig. 1, nu2 = {nu2:g}")
+for nu2, v, eps in GERL_ZIPPELIUS_FIG_1:
+    ax.plot([v], [eps], "k*", ms=10, label=f"Gerl & Zippelius 1999 Fig. 1, nu2 = {nu2:g}")
 ax.set_xlabel("v_i / c")
 ax.set_ylabel("epsilon")
 ax.legend(fontsize=7)
@@ -69,11 +75,11 @@ ax.legend(fontsize=7)
 ax = axes[1]
 case = [r for r in runs if close(r["poisson_ratio_2d"], a.nu2)
         and close(r["velocity"], a.velocity)]
-for alpha in sorted({r["alpha"] for r in case}):
+for s in sorted({r["s"] for r in case}):
     pts = sorted((1 / math.sqrt(r["n_modes"]), r["epsilon"]) for r in case
-                 if close(r["alpha"], alpha))
-    line = ax.plot(*zip(*pts), "o", ms=4, label=f"alpha = {alpha:g}")[0]
-    fit = [r for r in fits if r["limit"] == "modes" and close(r["alpha"], alpha)
+                 if close(r["s"], s))
+    line = ax.plot(*zip(*pts), "o", ms=4, label=f"s = {s:g}")[0]
+    fit = [r for r in fits if r["limit"] == "modes" and close(r["s"], s)
            and close(r["poisson_ratio_2d"], a.nu2) and close(r["velocity"], a.velocity)]
     if fit:
         x = [0, max(x for x, _ in pts)]
@@ -85,7 +91,7 @@ ax.set_title(f"nu2 = {a.nu2:g}, v = {a.velocity:g} c: N -> infinity")
 ax.legend(fontsize=7)
 
 ax = axes[2]
-limits = sorted((1 / r["alpha"], r["epsilon"], r["error"]) for r in fits
+limits = sorted((1 / r["s"], r["epsilon"], r["error"]) for r in fits
                 if r["limit"] == "modes" and close(r["poisson_ratio_2d"], a.nu2)
                 and close(r["velocity"], a.velocity))
 if limits:
@@ -96,12 +102,12 @@ if limits:
     if hard:
         xs = [0, max(x)]
         ax.plot(xs, [hard[0]["epsilon"] + hard[0]["slope"] * xi for xi in xs], "-",
-                lw=0.8, label="fit, alpha -> infinity")
+                lw=0.8, label="fit, s -> infinity")
         ax.errorbar([0], [hard[0]["epsilon"]], yerr=[hard[0]["error"]], fmt="*",
                     ms=9, capsize=3)
-ax.set_xlabel("1 / alpha")
+ax.set_xlabel("1 / s")
 ax.set_ylabel("epsilon")
-ax.set_title("hard contact: alpha -> infinity")
+ax.set_title("hard contact: s -> infinity")
 ax.legend(fontsize=7)
 fig.tight_layout()
 fig.savefig(a.output, dpi=120)

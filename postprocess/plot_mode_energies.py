@@ -1,8 +1,8 @@
 #!/usr/bin/python3
-"""Plot the energy in the leading elastic modes of an impact beside seed Table 1.
+"""Plot the energy in the leading elastic modes of an impact beside Gerl & Zippelius' Table 1.
 
 Usage: plot_mode_energies.py OUTPUT_DIR|FILE.csv [-o mode_energies.png] [--count 10]
-                             [--linear] [--nu2 NU2] [--velocity V] [--alpha A]
+                             [--linear] [--nu2 NU2] [--velocity V] [--stiffness S]
 
 Reads OUTPUT_DIR/mode_energies.csv (columns rank, n, l, family, omega,
 energy_fraction, average_energy_fraction; fractions of the initial kinetic
@@ -11,12 +11,13 @@ energy averaged over the collision), or with the largest energy_fraction (the
 energy after the collision) if the file has no average. Rows of family
 "rigid" or without (n, l) are left out. Writes OUTPUT_DIR/mode_energies.png:
 per mode (n,l) two bars (average during, and after, the collision) beside the
-values of Table 1 of Gerl & Zippelius (alpha = 500, v = 0.1c, nu = 0.33,
+values of Table 1 of Gerl & Zippelius (wall stiffness s = 500, v = 0.1c, nu = 0.33,
 1600 modes), and prints both side by side.
 
 A CSV file may be given instead of the directory, e.g.
 modal_expansion_modes.csv of task 'modal expansion impact' (one block of rows
-per poisson_ratio_2d, velocity, alpha): --nu2, --velocity and --alpha pick
+per poisson_ratio_2d, velocity, potential_stiffness): --nu2, --velocity and
+--stiffness pick
 the block.
 """
 import argparse
@@ -30,10 +31,10 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 from matplotlib.patches import Patch
 
-# Seed 001 (Gerl & Zippelius), Table 1: the ten modes with the largest average
-# fraction of the energy during the collision, alpha = 500, v_i = 0.1c,
+# Gerl & Zippelius 1999 (Gerl & Zippelius), Table 1: the ten modes with the largest average
+# fraction of the energy during the collision, s = 500, v_i = 0.1c,
 # 1600 modes. Columns: rank, n, l, average energy, energy after collision.
-SEED_TABLE_1 = [
+GERL_ZIPPELIUS_TABLE_1 = [
     (1, 2, 0, 0.1594843, 0.0513636),
     (2, 3, 0, 0.0480930, 0.0234695),
     (3, 0, 0, 0.0231257, 0.0089346),
@@ -88,9 +89,9 @@ def leading_modes(modes, key, count):
     return sorted(modes, key=value, reverse=True)[:count]
 
 
-def seed_by_label():
-    """Seed Table 1 as {(n, l): (rank, average, after)}."""
-    return {(n, l): (rank, average, after) for rank, n, l, average, after in SEED_TABLE_1}
+def table_1_by_label():
+    """Gerl & Zippelius' Table 1 as {(n, l): (rank, average, after)}."""
+    return {(n, l): (rank, average, after) for rank, n, l, average, after in GERL_ZIPPELIUS_TABLE_1}
 
 
 def number(value, width=10):
@@ -98,40 +99,40 @@ def number(value, width=10):
     return f"{value:{width}.7f}" if value is not None else " " * width
 
 
-def print_table(leading, seed):
-    """Our leading modes beside the seed's values for the same (n, l)."""
-    print(f"{'':31s}{'ours':>22s}   | {'seed Table 1':>28s}")
+def print_table(leading, paper):
+    """Our leading modes beside Gerl & Zippelius' values for the same (n, l)."""
+    print(f"{'':31s}{'ours':>22s}   | {'Gerl & Zippelius' Table 1':>28s}")
     print(f"{'rank':>4s} {'(n,l)':>6s} {'family':>10s} {'omega':>8s}"
           f" {'average':>10s} {'after':>10s}   | {'rank':>6s} {'average':>10s} {'after':>10s}")
     for i, mode in enumerate(leading, 1):
         label = f"({mode['n']},{mode['l']})"
-        seed_rank, seed_average, seed_after = seed.get((mode["n"], mode["l"]), ("", None, None))
+        paper_rank, paper_average, paper_after = paper.get((mode["n"], mode["l"]), ("", None, None))
         omega = f"{mode['omega']:8.4f}" if mode["omega"] is not None else " " * 8
         print(f"{i:4d} {label:>6s} {mode['family']:>10s} {omega}"
               f" {number(mode['average'])} {number(mode['after'])}   |"
-              f" {seed_rank!s:>6s} {number(seed_average)} {number(seed_after)}")
+              f" {paper_rank!s:>6s} {number(paper_average)} {number(paper_after)}")
     ours = {(m["n"], m["l"]) for m in leading}
-    missing = [row for row in SEED_TABLE_1 if (row[1], row[2]) not in ours]
+    missing = [row for row in GERL_ZIPPELIUS_TABLE_1 if (row[1], row[2]) not in ours]
     for rank, n, l, average, after in missing:
         label = f"({n},{l})"
         print(f"{'-':>4s} {label:>6s} {'':>10s} {'':>8s} {'':>10s} {'':>10s}   |"
               f" {rank:6d} {number(average)} {number(after)}")
 
 
-def plot(leading, seed, output, linear, title):
-    """Bars per mode: ours (solid) and the seed's (hatched), average and after."""
+def plot(leading, paper, output, linear, title):
+    """Bars per mode: ours (solid) and Gerl & Zippelius' (hatched), average and after."""
     labels = [(m["n"], m["l"]) for m in leading]
-    labels += [(n, l) for _, n, l, _, _ in SEED_TABLE_1 if (n, l) not in labels]
+    labels += [(n, l) for _, n, l, _, _ in GERL_ZIPPELIUS_TABLE_1 if (n, l) not in labels]
     ours = {(m["n"], m["l"]): m for m in leading}
     width = 0.2
     fig, ax = plt.subplots(figsize=(max(8, 0.75 * len(labels)), 4.8))
     for x, label in enumerate(labels):
         mode = ours.get(label, {})
-        _, seed_average, seed_after = seed.get(label, (None, None, None))
+        _, paper_average, paper_after = paper.get(label, (None, None, None))
         bars = [(mode.get("average"), AVERAGE_COLOUR, None),
                 (mode.get("after"), AFTER_COLOUR, None),
-                (seed_average, AVERAGE_COLOUR, "//"),
-                (seed_after, AFTER_COLOUR, "//")]
+                (paper_average, AVERAGE_COLOUR, "//"),
+                (paper_after, AFTER_COLOUR, "//")]
         for k, (value, colour, hatch) in enumerate(bars):
             if value is None or (not linear and value <= 0):
                 continue
@@ -140,7 +141,7 @@ def plot(leading, seed, output, linear, title):
                    edgecolor=colour, hatch=hatch)
     ax.set_xticks(range(len(labels)))
     ax.set_xticklabels([f"({n},{l})" for n, l in labels])
-    ax.set_xlabel("mode (n,l): our leading modes, then the seed's other ones")
+    ax.set_xlabel("mode (n,l): our leading modes, then Gerl & Zippelius' other ones")
     ax.set_ylabel("fraction of the initial kinetic energy")
     if not linear:
         ax.set_yscale("log")
@@ -148,7 +149,7 @@ def plot(leading, seed, output, linear, title):
         Patch(color=AVERAGE_COLOUR, label="average during collision"),
         Patch(color=AFTER_COLOUR, label="after collision"),
         Patch(facecolor="white", edgecolor="k", hatch="//",
-              label="seed Table 1 (alpha = 500, v = 0.1c, 1600 modes)"),
+              label="Gerl & Zippelius' Table 1 (s = 500, v = 0.1c, 1600 modes)"),
     ], fontsize=8)
     ax.set_title(title, fontsize=10)
     ax.grid(alpha=0.3, axis="y", which="both")
@@ -162,7 +163,8 @@ def main():
                         help="output directory holding mode_energies.csv, or a CSV file")
     parser.add_argument("--nu2", type=float)
     parser.add_argument("--velocity", type=float)
-    parser.add_argument("--alpha", type=float)
+    parser.add_argument("--stiffness", type=float,
+                        help="the wall potential's stiffness s (column potential_stiffness)")
     parser.add_argument("-o", "--output",
                         help="output PNG (default: mode_energies.png in the directory)")
     parser.add_argument("--count", type=int, default=10, help="number of modes (default 10)")
@@ -173,7 +175,7 @@ def main():
     output = args.output or os.path.join(folder, "mode_energies.png")
     where = {column: value for column, value in (("poisson_ratio_2d", args.nu2),
                                                  ("velocity", args.velocity),
-                                                 ("alpha", args.alpha))
+                                                 ("potential_stiffness", args.stiffness))
              if value is not None}
     source = args.directory if is_file else os.path.join(args.directory, "mode_energies.csv")
     modes, has_average = read_modes(source, where)
@@ -181,9 +183,9 @@ def main():
     leading = leading_modes(modes, key, args.count)
     ranked_by = "average during collision" if has_average else "energy after collision"
     print(f"{len(leading)} of {len(modes)} elastic modes, ranked by {ranked_by}")
-    print_table(leading, seed_by_label())
-    plot(leading, seed_by_label(), output, args.linear,
-         f"{len(leading)} leading modes by {ranked_by} (solid) beside seed Table 1 (hatched)")
+    print_table(leading, table_1_by_label())
+    plot(leading, table_1_by_label(), output, args.linear,
+         f"{len(leading)} leading modes by {ranked_by} (solid) beside Gerl & Zippelius' Table 1 (hatched)")
     print(f"wrote {output}")
 
 

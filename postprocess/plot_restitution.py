@@ -1,35 +1,58 @@
 #!/usr/bin/python3
 """epsilon(v) with error bars from one or more restitution.csv files
-(task 'sweep').
+(tasks 'sweep' and 'restitution law').
 
 usage: plot_restitution.py restitution.csv [more.csv ...] [-o epsilon.png]
+
+Speeds are drawn as v/c, or in m/s for the tables of SI runs (Units = SI):
+their restitution.h5 beside the CSV holds the speed unit c in m/s (root
+attribute speed_unit_m_per_s). Tables of both kinds cannot share a plot.
 """
 import argparse
 import csv
+import os
+import sys
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
+
+def speed_unit(csv_path):
+    """c in m/s if the table is an SI run's, else None."""
+    h5_path = os.path.join(os.path.dirname(csv_path) or ".", "restitution.h5")
+    if not os.path.exists(h5_path):
+        return None
+    import h5py
+    with h5py.File(h5_path, "r") as f:
+        value = f.attrs.get("speed_unit_m_per_s")
+    return float(value) if value is not None else None
+
+
 p = argparse.ArgumentParser()
 p.add_argument("files", nargs="+")
 p.add_argument("-o", "--output", default="epsilon.png")
 a = p.parse_args()
 
+units = [speed_unit(path) for path in a.files]
+if len({u is None for u in units}) > 1:
+    sys.exit("plot_restitution: SI and dimensionless tables cannot share a plot")
+si = units[0] is not None
 fig, ax = plt.subplots(figsize=(6, 4.2))
-for path in a.files:
+for path, c in zip(a.files, units):
     rows = list(csv.DictReader(open(path)))
     for nu2 in sorted({r["poisson_ratio_2d"] for r in rows}):
-        sel = [r for r in rows if r["poisson_ratio_2d"] == nu2]
-        v = [float(r["velocity"]) for r in sel]
+        sel = [r for r in rows if r["poisson_ratio_2d"] == nu2
+               and r["epsilon"] not in ("", "nan")]
+        v = [float(r["velocity"]) * (c if si else 1.0) for r in sel]
         eps = [float(r["epsilon"]) for r in sel]
         err = [float(r["epsilon_error"]) if r["epsilon_error"] not in ("", "nan")
                else 0.0 for r in sel]
         ax.errorbar(v, eps, yerr=err, fmt="o-", capsize=3, ms=4,
                     label=f"FE, nu2 = {float(nu2):.2f}")
 ax.set_xscale("log")
-ax.set_xlabel("v_i / c")
+ax.set_xlabel("v_i [m/s]" if si else "v_i / c")
 ax.set_ylabel("epsilon")
 ax.legend(fontsize=8)
 fig.tight_layout()

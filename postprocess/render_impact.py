@@ -14,11 +14,13 @@ scale factor, colours it by the field and saves a PNG with a colour bar and
 the time in the title. The rigid wall is drawn as a black line (not with a
 partner body, subsection Partner: both bodies are in the PVD).
 
-Units: the title's time is t c/R (impact.pvd) or the load P/(pi E2 R)
-(contact.pvd), as in the .pvd file. The colour bar shows stresses over E2
-and the displacement magnitude over R, with E2 and R read from
-OUTPUT_DIR/used_parameters.json (the .vtu files hold the values in the units
-of the parameter file).
+Units: a dimensionless run's .vtu files hold the values in the units of the
+parameter file; the colour bar shows stresses over E2 and the displacement
+magnitude over R (E2 and R read from OUTPUT_DIR/used_parameters.json), and
+the title's time is t c/R (impact.pvd) or the load P/(pi E2 R)
+(contact.pvd), as in the .pvd file. An SI run (Units = SI) writes SI: the
+colour bar shows stresses in Pa and displacements in m, the title the time
+in s.
 """
 
 import argparse
@@ -63,7 +65,8 @@ def parse_arguments():
                         help="field to colour by (default von_mises)")
     parser.add_argument("--time", type=float,
                         help="time of the snapshot: the nearest one is "
-                        "shown (units of the .pvd: R/c for impact.pvd); "
+                        "shown (units of the .pvd: R/c for impact.pvd, s "
+                        "for an SI run); "
                         "default the snapshot with the largest von Mises "
                         "stress")
     parser.add_argument("--warp-scale", type=float, default=1.0,
@@ -102,17 +105,21 @@ def run_constants(output_dir):
     def vector(section, name):
         return [float(x) for x in entry(section, name).split(",")]
 
+    units = prm.get("Units", "dimensionless")
+    units = units["value"] if isinstance(units, dict) else units
     young = float(entry("Material", "Young modulus"))
     nu = float(entry("Material", "Poisson ratio"))
     plane_strain = entry("Material", "Plane model") == "plane strain"
     return {
-        # E2 = E / (1 - nu^2) in plane strain (seed 001, eq. 2).
+        # E2 = E / (1 - nu^2) in plane strain (Gerl & Zippelius 1999, eq. 2).
         "E2": young / (1 - nu * nu) if plane_strain else young,
         "R": float(entry("Geometry", "Radius")),
         "wall_point": vector("Contact", "Wall point"),
         "wall_normal": vector("Contact", "Wall normal"),
         # A partner body (subsection Partner) replaces the wall.
         "partner_body": "Partner" in prm and entry("Partner", "Kind") == "body",
+        # An SI run writes its .vtu files in SI (m, Pa) and the .pvd in s.
+        "si": units == "SI",
     }
 
 
@@ -154,6 +161,8 @@ def main():
     label, kind = FIELDS[args.field]
     if constants is None:
         scale, unit = 1.0, "as written"  # no "/ unit" in the colour bar
+    elif constants["si"]:
+        scale, unit = 1.0, "Pa" if kind == "stress" else "m"
     elif kind == "stress":
         scale, unit = 1.0 / constants["E2"], "E2"
     else:
@@ -199,7 +208,9 @@ def main():
     lut.AutomaticRescaleRangeMode = "Never"
     display.SetScalarBarVisibility(view, True)
     bar = GetScalarBar(lut, view)
-    bar.Title = args.field if unit == "as written" else f"{args.field} / {unit}"
+    bar.Title = (args.field if unit == "as written" else
+                 f"{args.field} [{unit}]" if constants["si"] else
+                 f"{args.field} / {unit}")
     bar.ComponentTitle = ""
     bar.TitleColor = bar.LabelColor = [0.0, 0.0, 0.0]
     bar.TitleFontSize = bar.LabelFontSize = 16
@@ -222,7 +233,9 @@ def main():
         wall_display.AmbientColor = wall_display.DiffuseColor = [0, 0, 0]
         wall_display.LineWidth = 3.0
 
-    when = (f"t = {time:.3f} R/c" if args.pvd.startswith("impact")
+    si = constants is not None and constants["si"]
+    when = (f"t = {time:.4g} s" if si and args.pvd.startswith("impact")
+            else f"t = {time:.3f} R/c" if args.pvd.startswith("impact")
             else f"P/(pi E2 R) = {time:.3g}" if args.pvd.startswith("contact")
             else f"time {time:g}")
     title = Text(Text=f"{label}, {when}")

@@ -9,9 +9,10 @@ OUTPUT_DIR/impact_3d.pvd: the meridian revolved about the impact axis (the
 3D x axis), as the sphere's surface and the two cut planes that show the
 inside. This picks the snapshot nearest to T (default: the one with the
 largest von Mises stress), warps it by the displacement times the scale
-factor, colours it by the field over E* (stresses; E* = E / (1 - nu^2) from
-OUTPUT_DIR/used_parameters.json) and saves a PNG with the rigid wall x = 0
-drawn as a grey square.
+factor, colours it by the field and saves a PNG with the rigid wall x = 0
+drawn as a grey square. A dimensionless run's field is shown over
+E* = E / (1 - nu^2) (from OUTPUT_DIR/used_parameters.json); an SI run
+(Units = SI) writes its .vtu files in SI and the field is shown in Pa.
 """
 
 import argparse
@@ -42,26 +43,30 @@ def parse_arguments():
                         choices=["von_mises", "pressure", "hoop_stress",
                                  "principal_stress_1", "principal_stress_2"])
     parser.add_argument("--time", type=float,
-                        help="snapshot time t c/R (default: largest stress)")
+                        help="snapshot time, t c/R (s for an SI run; "
+                        "default: the largest stress)")
     parser.add_argument("--warp-scale", type=float, default=1.0)
     parser.add_argument("--size", type=int, nargs=2, default=[900, 700])
     return parser.parse_args()
 
 
-def effective_modulus(output_dir):
-    """E* = E / (1 - nu^2) from used_parameters.json, or None."""
+def stress_unit(output_dir):
+    """How the .vtu's stresses are shown: (divisor, title suffix). SI runs
+    write Pa; a dimensionless run's stresses are shown over
+    E* = E / (1 - nu^2) from used_parameters.json (as written without it)."""
     path = os.path.join(output_dir, "used_parameters.json")
     if not os.path.exists(path):
-        return None
+        return 1.0, ""
     with open(path) as f:
         prm = json.load(f)
 
-    def entry(name):
-        value = prm["Material"][name]
-        return float(value["value"] if isinstance(value, dict) else value)
+    def value(entry):
+        return entry["value"] if isinstance(entry, dict) else entry
 
-    nu = entry("Poisson ratio")
-    return entry("Young modulus") / (1.0 - nu * nu)
+    if value(prm.get("Units", "dimensionless")) == "SI":
+        return 1.0, " [Pa]"
+    nu = float(value(prm["Material"]["Poisson ratio"]))
+    return float(value(prm["Material"]["Young modulus"])) / (1.0 - nu * nu), " / E*"
 
 
 def main():
@@ -81,8 +86,8 @@ def main():
 
     time = max(times, key=largest) if args.time is None else \
         min(times, key=lambda t: abs(t - args.time))
-    modulus = effective_modulus(args.output_dir)
-    scale = 1.0 / modulus if modulus else 1.0
+    modulus, unit = stress_unit(args.output_dir)
+    scale = 1.0 / modulus
     shown = args.field + "_scaled"
     calculator = Calculator(Input=reader, AttributeType="Point Data",
                             ResultArrayName=shown,
@@ -114,7 +119,7 @@ def main():
     lut.AutomaticRescaleRangeMode = "Never"
     display.SetScalarBarVisibility(view, True)
     bar = GetScalarBar(lut, view)
-    bar.Title = f"{args.field} / E*" if modulus else args.field
+    bar.Title = args.field + unit
     bar.ComponentTitle = ""
     bar.TitleColor = bar.LabelColor = [0.0, 0.0, 0.0]
     bar.TitleFontSize = bar.LabelFontSize = 16
@@ -140,7 +145,8 @@ def main():
     output = args.output or os.path.join(args.output_dir,
                                          f"impact_3d_{args.field}.png")
     SaveScreenshot(output, view, ImageResolution=args.size)
-    print(f"render_sphere_3d: t = {time:g} R/c, {output}")
+    print(f"render_sphere_3d: t = {time:g}"
+          f"{' s' if unit == ' [Pa]' else ' R/c'}, {output}")
 
 
 if __name__ == "__main__":

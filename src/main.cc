@@ -42,9 +42,13 @@ namespace
   {
     out << "usage: diskimpact FILE.prm\n"
            "       diskimpact --print-parameters [FILE.prm]\n"
+           "       diskimpact --print-parameters-json\n"
            "Runs the task named in FILE.prm (also under mpirun -np N);\n"
            "--print-parameters writes every parameter with its default (or\n"
-           "the value in FILE.prm) and its documentation.\n";
+           "the value in FILE.prm) and its documentation;\n"
+           "--print-parameters-json the same as JSON with the allowed values\n"
+           "and the old names of renamed parameters (docs/reference/\n"
+           "parameters.md is made from it by scripts/parameter_reference).\n";
   }
 
   /// Parse the command line and run; returns the exit code.
@@ -53,12 +57,30 @@ namespace
   {
     using namespace DiskImpact;
     const std::vector<std::string> args(argv + 1, argv + argc);
+    const bool                     root =
+      dealii::Utilities::MPI::this_mpi_process(communicator) == 0;
+    // Every parameter in declaration order, in @p style, from rank 0.
+    auto print = [root](const dealii::ParameterHandler             &prm,
+                        const dealii::ParameterHandler::OutputStyle style) {
+      if (root)
+        prm.print_parameters(std::cout,
+                             dealii::ParameterHandler::OutputStyle(
+                               style |
+                               dealii::ParameterHandler::KeepDeclarationOrder));
+    };
+    if (args.size() == 1 && args[0] == "--print-parameters-json")
+      {
+        dealii::ParameterHandler prm;
+        Parameters::declare_parameters(prm);
+        print(prm, dealii::ParameterHandler::JSON);
+        return 0;
+      }
     const bool print_only = !args.empty() && args[0] == "--print-parameters";
     if (args.empty() || args[0] == "--help" || args[0] == "-h" ||
         args.size() > (print_only ? 2u : 1u) ||
         (!print_only && args[0].rfind("-", 0) == 0))
       {
-        if (dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
+        if (root)
           print_usage(args.empty() ? std::cerr : std::cout);
         return args.empty() || args[0].rfind("-", 0) != 0 ||
                    (args[0] != "--help" && args[0] != "-h") ?
@@ -71,7 +93,9 @@ namespace
     const std::string file =
       print_only ? (args.size() == 2 ? args[1] : "") : args[0];
     if (!file.empty())
-      read_parameter_file(prm, file);
+      for (const std::string &notice : read_parameter_file(prm, file))
+        if (root)
+          std::cerr << "diskimpact: note: " << notice << std::endl;
     Parameters parameters;
     try
       {
@@ -86,14 +110,13 @@ namespace
         throw InputError("in parameter file '" + file + "': " + info.str());
       }
 
+    if (root)
+      for (const std::string &warning : parameters.warnings)
+        std::cerr << "diskimpact: warning: " << warning << std::endl;
+
     if (print_only)
       {
-        if (dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
-          prm.print_parameters(
-            std::cout,
-            dealii::ParameterHandler::OutputStyle(
-              dealii::ParameterHandler::PRM |
-              dealii::ParameterHandler::KeepDeclarationOrder));
+        print(prm, dealii::ParameterHandler::PRM);
         return 0;
       }
     run_task(parameters, prm, communicator);

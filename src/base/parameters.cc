@@ -1,6 +1,8 @@
 #include "base/parameters.h"
 
 #include "base/input_error.h"
+#include "base/parameter_json.h"
+#include "base/renamed_entries.h"
 
 #include <algorithm>
 #include <cmath>
@@ -38,9 +40,7 @@ namespace DiskImpact
   Parameters::parse_parameters(ParameterHandler &prm)
   {
     run.parse_parameters(prm);
-    std::ostringstream json;
-    prm.print_parameters(json, ParameterHandler::ShortJSON);
-    run.parameters_json = json.str();
+    run.parameters_json = parameters_as_json(prm, ParameterHandler::ShortJSON);
     units.parse_parameters(prm);
     if (!units.is_si())
       return parse_physics(prm);
@@ -58,7 +58,9 @@ namespace DiskImpact
   void
   Parameters::parse_physics(ParameterHandler &prm)
   {
-    geometry.parse_parameters(prm);
+    geometry.parse_parameters(prm,
+                              run.task != Task::modal_analysis &&
+                                run.task != Task::modal_convergence);
     material.parse_parameters(prm);
     if (geometry.is_axisymmetric())
       {
@@ -88,7 +90,8 @@ namespace DiskImpact
             "Modal analysis: 'Torsional modes' are a sphere's azimuthal "
             "modes; a disk's torsional modes (n = 0) are among its in-plane "
             "modes (set 'Torsional modes = 0')");
-    // The disk's reduced models (seeds 000-002) have no sphere version.
+    // The disk's reduced models (Schwager 2007, Gerl & Zippelius 1999, Schwager
+    // & Pöschel 2007) have no sphere version.
     require(!geometry.is_axisymmetric() ||
               (run.task != Task::reference_models &&
                run.task != Task::modal_expansion_impact),
@@ -181,6 +184,41 @@ namespace DiskImpact
         for (const double tau : impact.relaxation_times())
           in_list("Relaxation times",
                   [&]() { material.with_relaxation_time(tau); });
+      }
+    warn_of_locking();
+  }
+
+  void
+  Parameters::warn_of_locking()
+  {
+    // Q1 elements lock (volumetric locking) when the body resists volume
+    // change much more than shear: plane strain and the sphere with the 3D
+    // nu near 1/2; plane stress cannot (its in-plane bulk modulus stays
+    // below 2 mu). lambda/mu = 2 nu / (1 - 2 nu) above 9 (nu > 0.45).
+    if (finite_element.degree > 1)
+      return;
+    std::vector<Material> bodies{material};
+    if (partner.is_body())
+      bodies.push_back(partner.material());
+    if (run.runs_sweep())
+      for (const double nu : impact.poisson_ratios())
+        bodies.push_back(material.with_poisson_ratio(nu));
+    for (const Material &body : bodies)
+      {
+        const bool three_d_nu = geometry.is_axisymmetric() ||
+                                body.plane_model() == PlaneModel::plane_strain;
+        const double nu = body.poisson_ratio();
+        if (three_d_nu && 2. * nu / (1. - 2. * nu) > max_linear_lambda_over_mu)
+          {
+            warnings.push_back(
+              "Q1 elements ('Degree = 1') lock in a nearly incompressible " +
+              std::string(geometry.is_axisymmetric() ? "sphere" :
+                                                       "plane-strain disk") +
+              " (nu = " + approximately(nu, 6) +
+              "): displacements come out too small and epsilon too large; "
+              "use 'Degree = 2' or more (subsection Finite element)");
+            return;
+          }
       }
   }
 
@@ -345,9 +383,49 @@ namespace DiskImpact
              "> of file <" + origin.file.string() + ">" + where.suffix().str() +
              " (the line reads '" + Utilities::trim(origin.text) + "')";
     }
+
+    /**
+     * One notice per line of @p origins that sets an entry by its old name
+     * (renamed_entries()): "FILE:LINE: 'OLD' (subsection S) is now called
+     * 'NEW'". Subsections are followed by their 'subsection' and 'end'
+     * lines, as deal.II reads them.
+     */
+    std::vector<std::string>
+    renamed_entry_notices(const std::vector<SourceLine> &origins)
+    {
+      const std::regex subsection("^\\s*(subsection|SUBSECTION)\\s+(.*?)\\s*$");
+      const std::regex end("^\\s*(end|END)\\s*$");
+      const std::regex set("^\\s*(set|SET)\\s+(.*?)\\s*=");
+      std::vector<std::string> path;
+      std::vector<std::string> notices;
+      for (const SourceLine &line : origins)
+        {
+          const std::string text = line.text.substr(0, line.text.find('#'));
+          std::smatch       match;
+          if (std::regex_search(text, match, subsection))
+            path.push_back(match[2].str());
+          else if (std::regex_search(text, end) && !path.empty())
+            path.pop_back();
+          else if (std::regex_search(text, match, set))
+            {
+              std::string joined;
+              for (const std::string &name : path)
+                joined += (joined.empty() ? "" : "/") + name;
+              for (const RenamedEntry &entry : renamed_entries())
+                if (entry.subsection == joined &&
+                    entry.old_name == match[2].str())
+                  notices.push_back(line.file.string() + ":" +
+                                    std::to_string(line.number) + ": '" +
+                                    entry.old_name + "' (subsection " +
+                                    entry.subsection + ") is now called '" +
+                                    entry.new_name + "'");
+            }
+        }
+      return notices;
+    }
   } // namespace
 
-  void
+  std::vector<std::string>
   read_parameter_file(ParameterHandler &prm, const std::string &filename)
   {
     std::vector<std::filesystem::path> chain;
@@ -367,5 +445,6 @@ namespace DiskImpact
         throw InputError("in parameter file '" + filename +
                          "': " + one_line_message(e, origins));
       }
+    return renamed_entry_notices(origins);
   }
 } // namespace DiskImpact

@@ -2,6 +2,7 @@
 
 #include "base/input_error.h"
 
+#include <algorithm>
 #include <map>
 
 namespace DiskImpact
@@ -33,7 +34,8 @@ namespace DiskImpact
       "(restitution.csv). 'reference models': epsilon of a reduced "
       "collision model, no finite elements (subsection Reference models, "
       "reference_<model>.csv). 'modal expansion impact': the impact "
-      "in the modal expansion of seed 001 with its smooth wall potential, "
+      "in the modal expansion of Gerl & Zippelius 1999 with its smooth wall "
+      "potential, "
       "extrapolated to all modes and hard contact (subsection Modal "
       "expansion, modal_expansion.csv, modal_extrapolation.csv). "
       "'restitution law': the sweep with its convergence studies, then "
@@ -41,10 +43,13 @@ namespace DiskImpact
       "Restitution law; restitution_law.csv, restitution_law.json, "
       "dem/).");
     prm.declare_entry("Output directory",
-                      "output/modal",
+                      "",
                       Patterns::Anything(),
                       "Directory for all results (created if missing); it "
-                      "receives a copy of the parameters used.");
+                      "receives a copy of the parameters used. Empty: "
+                      "output/TASK, TASK the task's name with '_' for each "
+                      "space (output/impact, output/sweep, "
+                      "output/restitution_law, ...).");
   }
 
   void
@@ -60,9 +65,15 @@ namespace DiskImpact
       {"reference models", Task::reference_models},
       {"modal expansion impact", Task::modal_expansion_impact},
       {"restitution law", Task::restitution_law}};
-    task             = tasks.at(prm.get("Task"));
-    output_directory = prm.get("Output directory");
-    require(!output_directory.empty(), "'Output directory' must not be empty");
+    const std::string name = prm.get("Task");
+    task                   = tasks.at(name);
+    output_directory       = prm.get("Output directory");
+    if (output_directory.empty())
+      {
+        std::string directory = name;
+        std::replace(directory.begin(), directory.end(), ' ', '_');
+        output_directory = "output/" + directory;
+      }
   }
 
   bool

@@ -144,7 +144,7 @@ namespace DiskImpact
     divide(prm, "Time stepping", "Time step", own_time);
     divide(prm, "Impact", "Velocity", speed_scale);
     divide(prm, "Impact", "Velocities", speed_scale);
-    divide(prm, "Impact", "Relaxation times", time_scale);
+    divide(prm, "Impact", "Relaxation times", own_time);
     divide(prm, "Restitution law", "Reference speed", speed_scale);
     si = true;
   }
@@ -195,6 +195,16 @@ namespace DiskImpact
   UnitSystem::force_name() const
   {
     return force_unit_name;
+  }
+
+  FieldScales
+  UnitSystem::field_scales() const
+  {
+    if (!si)
+      return {};
+    // The run was solved with R = E = rho = 1: its stresses are in units of
+    // the SI Young modulus.
+    return {length_scale, young_si, time_scale};
   }
 
   void

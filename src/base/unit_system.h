@@ -10,6 +10,19 @@
 namespace DiskImpact
 {
   /**
+   * The factors that turn a run's fields into the units its files are
+   * written in: 1 for a dimensionless run; for an SI run R [m] for lengths
+   * (coordinates, displacements), E [Pa] for stresses, R/c [s] for the
+   * times of a record (which are in units of R/c).
+   */
+  struct FieldScales
+  {
+    double length = 1.;
+    double stress = 1.;
+    double time   = 1.;
+  };
+
+  /**
    * The top-level entry 'Units': 'dimensionless' (the default: any
    * consistent units, speeds in units of c) or 'SI' (a real particle:
    * radius in m, Young modulus in Pa, density in kg/m^3, times in s,
@@ -61,6 +74,9 @@ namespace DiskImpact
     /// "N" (sphere) or "N/m" (disk, per unit thickness).
     std::string
     force_name() const;
+    /// The scales of the VTU/PVD output (identity unless SI).
+    FieldScales
+    field_scales() const;
 
     /// The scales, one line each (SI only).
     void

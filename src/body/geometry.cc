@@ -86,10 +86,13 @@ namespace DiskImpact
       prm.declare_entry("Domain",
                         "",
                         Patterns::Selection("|full disk|half disk"),
-                        "Disks only: 'full disk' (the default when empty), or "
-                        "'half disk' (y >= 0, symmetric about the impact axis "
-                        "y = 0: only modes even about it). Must be empty for "
-                        "a sphere, whose domain is its meridian.");
+                        "Disks only: 'half disk' (y >= 0, symmetric about "
+                        "the impact axis y = 0: exact for a head-on impact; "
+                        "only modes even about the axis) or 'full disk'. "
+                        "Empty: 'full disk' for the tasks 'modal analysis' "
+                        "and 'modal convergence', 'half disk' for the "
+                        "others. Must be empty for a sphere, whose domain is "
+                        "its meridian.");
       prm.declare_entry("Mesh file",
                         "",
                         Patterns::Anything(),
@@ -112,13 +115,15 @@ namespace DiskImpact
   }
 
   void
-  BodyGeometry::parse_parameters(ParameterHandler &prm)
+  BodyGeometry::parse_parameters(ParameterHandler &prm,
+                                 const bool        half_disk_by_default)
   {
     prm.enter_subsection("Geometry");
     body_kind   = prm.get("Body") == "sphere" ? Body::sphere : Body::disk;
     disk_radius = prm.get_double("Radius");
     const std::string domain = prm.get("Domain");
-    half_disk             = body_kind == Body::sphere || domain == "half disk";
+    half_disk = body_kind == Body::sphere || domain == "half disk" ||
+                (domain.empty() && half_disk_by_default);
     mesh_file             = prm.get("Mesh file");
     n_global_refinements  = prm.get_integer("Global refinements");
     n_contact_refinements = prm.get_integer("Contact refinements");

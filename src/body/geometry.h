@@ -99,8 +99,11 @@ namespace DiskImpact
   public:
     static void
     declare_parameters(dealii::ParameterHandler &prm);
+    /// Parse subsection Geometry; an empty 'Domain' of a disk is a half
+    /// disk if @p half_disk_by_default, else a full disk.
     void
-    parse_parameters(dealii::ParameterHandler &prm);
+    parse_parameters(dealii::ParameterHandler &prm,
+                     bool                      half_disk_by_default = false);
 
     double
     radius() const;

@@ -124,24 +124,27 @@ namespace DiskImpact
                       "length^3], with h_contact the length of the smallest "
                       "edge face at the contact point. The penalty error "
                       "(penetration) is proportional to 1 / kappa.");
-    prm.declare_entry("Law",
-                      "penalty",
-                      Patterns::Selection("penalty|exponential|constraint"),
-                      "The wall's pressure p on an edge point with gap g: "
-                      "'penalty', p = k <-g>; 'exponential', the smooth wall "
-                      "potential of seed 001 (eq. 41), energy (E2 R / alpha) "
-                      "exp(alpha x / R) per unit edge length, x the distance "
-                      "of the point beyond the wall plane, cut where the "
-                      "pressure falls below 1e-16 E2 (the disk starts that "
-                      "far from the wall, 36.8 R / alpha); 'constraint', no "
-                      "penetration at the edge nodes (g >= 0 exactly, the "
-                      "pressure a Lagrange multiplier; the contact zone's "
-                      "edge carries no mass, docs/impact-convergence.md).");
+    prm.declare_entry(
+      "Law",
+      "penalty",
+      Patterns::Selection("penalty|exponential|constraint"),
+      "The wall's pressure p on an edge point with gap g: "
+      "'penalty', p = k <-g>; 'exponential', the smooth wall "
+      "potential of Gerl & Zippelius 1999 (eq. 41), energy (E2 R / s) "
+      "exp(s x / R) per unit edge length, s the 'Potential stiffness' "
+      "and x the distance "
+      "of the point beyond the wall plane, cut where the "
+      "pressure falls below 1e-16 E2 (the disk starts that "
+      "far from the wall, 36.8 R / s); 'constraint', no "
+      "penetration at the edge nodes (g >= 0 exactly, the "
+      "pressure a Lagrange multiplier; the contact zone's "
+      "edge carries no mass, docs/impact-convergence.md).");
     prm.declare_entry("Potential stiffness",
                       "100",
                       Patterns::Double(),
-                      "Law 'exponential': alpha > 0 of the potential [-] "
-                      "(hard contact as alpha -> infinity).");
+                      "Law 'exponential': the stiffness s > 0 of the "
+                      "potential [-] (Gerl & Zippelius' alpha; hard contact "
+                      "as s -> infinity).");
     prm.declare_entry("Wall point",
                       "0, 0",
                       Patterns::List(Patterns::Double(), 2, 2),

@@ -34,7 +34,8 @@ namespace DiskImpact
   enum class WallLawKind
   {
     penalty,     ///< p = k <-g>
-    exponential, ///< p = p_c exp(-lambda g) for g < 0 (seed 001, eq. 41)
+    exponential, ///< p = p_c exp(-lambda g) for g < 0 (Gerl & Zippelius 1999,
+                 ///< eq. 41)
     constraint   ///< g >= 0 exactly, the pressure a Lagrange multiplier
   };
 
@@ -43,7 +44,7 @@ namespace DiskImpact
    * the gap g of an edge point (g < 0: the point is beyond the plane where
    * the law starts to act), with its energy per unit boundary length:
    * - penalty: p = k <-g> (<.> the positive part), energy k <-g>^2 / 2;
-   * - exponential: the smooth wall potential of seed 001 (eq. 41),
+   * - exponential: the smooth wall potential of Gerl & Zippelius 1999 (eq. 41),
    *   energy (E2 / lambda) exp(lambda x) per unit length with x the
    *   distance of the point beyond the wall plane and lambda = alpha / R,
    *   cut where its pressure E2 exp(lambda x) falls below p_c = 1e-16 E2:
@@ -94,7 +95,7 @@ namespace DiskImpact
    * Subsection "Contact": the wall, the law ('Law') and its constant: the
    * dimensionless penalty factor kappa of the penalty stiffness
    * k = kappa E2 / h_contact, or the stiffness alpha of the exponential
-   * potential (seed 001, eq. 41).
+   * potential (Gerl & Zippelius 1999, eq. 41).
    */
   class ContactParameters
   {

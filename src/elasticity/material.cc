@@ -17,11 +17,12 @@ namespace DiskImpact
       prm.declare_entry("Plane model",
                         "",
                         Patterns::Selection("|plane strain|plane stress"),
-                        "Disks only: 'plane strain' (long cylinder; Young "
-                        "modulus and Poisson ratio are the 3D constants; the "
-                        "default when empty) or 'plane stress' (thin plate; "
-                        "the constants are the in-plane ones). Must be empty "
-                        "for a sphere, whose constants are the 3D ones.");
+                        "Disks only: 'plane stress' (thin plate; the "
+                        "constants are the in-plane ones; the default when "
+                        "empty) or 'plane strain' (long cylinder; Young "
+                        "modulus and Poisson ratio are the 3D constants). "
+                        "Must be empty for a sphere, whose constants are the "
+                        "3D ones.");
       prm.declare_entry("Young modulus",
                         "1",
                         Patterns::Double(),
@@ -67,8 +68,8 @@ namespace DiskImpact
     prm.enter_subsection("Material");
     const std::string name = prm.get("Plane model");
     model_given            = !name.empty();
-    const PlaneModel m     = name == "plane stress" ? PlaneModel::plane_stress :
-                                                      PlaneModel::plane_strain;
+    const PlaneModel m     = name == "plane strain" ? PlaneModel::plane_strain :
+                                                      PlaneModel::plane_stress;
     set(m,
         prm.get_double("Young modulus"),
         prm.get_double("Poisson ratio"),

@@ -27,8 +27,8 @@ namespace DiskImpact
    * A linear elastic (optionally Kelvin-Voigt) isotropic material in two
    * dimensions. Plane strain with the 3D constants (E, nu) has the same
    * equations as plane stress with the in-plane constants
-   * E2 = E / (1 - nu^2), nu2 = nu / (1 - nu) (seed 001, eq. 2); everything
-   * below is expressed through the in-plane constants.
+   * E2 = E / (1 - nu^2), nu2 = nu / (1 - nu) (Gerl & Zippelius 1999, eq. 2);
+   * everything below is expressed through the in-plane constants.
    */
   class Material
   {
@@ -79,7 +79,8 @@ namespace DiskImpact
     double
     relaxation_time() const;
 
-    /// In-plane Young modulus E2 and Poisson ratio nu2 (seed 001, eq. 2).
+    /// In-plane Young modulus E2 and Poisson ratio nu2 (Gerl & Zippelius 1999,
+    /// eq. 2).
     double
     in_plane_young_modulus() const;
     double
@@ -110,8 +111,8 @@ namespace DiskImpact
     bool
     is_viscous() const;
 
-    /// Longitudinal and transverse wave speeds, and the seed's velocity unit
-    /// c = sqrt(E2 / rho).
+    /// Longitudinal and transverse wave speeds, and the velocity unit of Gerl &
+    /// Zippelius c = sqrt(E2 / rho).
     double
     longitudinal_wave_speed() const;
     double

@@ -92,9 +92,9 @@ namespace DiskImpact
    * The von Mises stress and the pressure are those of the full 3D stress of
    * the plane model: sigma_zz = 0 in plane stress, and in plane strain
    * (eps_zz = 0) sigma_zz = nu (sigma_xx + sigma_yy) with the 3D Poisson
-   * ratio nu = nu2 / (1 + nu2) (the inverse of seed 001, eq. 2). With
-   * s = dev sigma (3D): von_mises = sqrt(3/2 s : s) = sqrt(3 J2) (von Mises'
-   * equivalent stress, 1913), pressure = -tr(sigma) / 3. The principal
+   * ratio nu = nu2 / (1 + nu2) (the inverse of Gerl & Zippelius 1999, eq. 2).
+   * With s = dev sigma (3D): von_mises = sqrt(3/2 s : s) = sqrt(3 J2) (von
+   * Mises' equivalent stress, 1913), pressure = -tr(sigma) / 3. The principal
    * stresses are the eigenvalues sigma_1 >= sigma_2 of the in-plane stress,
    * from Mohr's circle (sigma_xx + sigma_yy) / 2 +-
    * sqrt(((sigma_xx - sigma_yy) / 2)^2 + sigma_xy^2); sigma_zz is the third.

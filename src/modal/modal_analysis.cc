@@ -3,6 +3,7 @@
 #include "base/run_error.h"
 #include "output/atomic_file.h"
 #include "output/csv_table.h"
+#include "output/vtu_record.h"
 #include "reference/free_disk_modes.h"
 #include "reference/free_sphere_modes.h"
 
@@ -220,8 +221,8 @@ namespace DiskImpact
     flags.compression_level =
       DataOutBase::VtkFlags::ZlibCompressionLevel::best_speed;
     data_out.set_flags(flags);
-    const std::string name = data_out.write_vtu_with_pvtu_record(
-      directory + "/", "modes", 0, communicator, 1);
+    const std::string name =
+      write_vtu_record(data_out, directory, "modes", 0, communicator);
     on_root(communicator, [&]() {
       write_atomically(directory + "/modes.pvd", [&](std::ostream &out) {
         DataOutBase::write_pvd_record(out, {{0., name}});

@@ -20,8 +20,8 @@ namespace DiskImpact
    * (M-orthonormal, ModalSolver) of the operator the time integrator uses,
    * labelled (n, l, family) from their edge motion; the modal coordinates
    * q = phi^T M u, q' = phi^T M v give each mode's energy
-   * (q'^2 + omega^2 q^2) / 2. Seed 001's Table 1 ranks the modes by their
-   * energy averaged over the collision, accumulated by add_sample().
+   * (q'^2 + omega^2 q^2) / 2. Gerl & Zippelius' Table 1 ranks the modes by
+   * their energy averaged over the collision, accumulated by add_sample().
    */
   class ModalProjection
   {

@@ -1,5 +1,6 @@
 #include "output/hdf5_output.h"
 
+#include "base/unit_system.h"
 #include "output/atomic_file.h"
 #include "output/csv_table.h"
 
@@ -223,6 +224,22 @@ namespace DiskImpact
     close_group(parent);
     recorder.throw_if_failed("writing attribute " + object_path(group, name) +
                              " of " + filename);
+  }
+
+  void
+  Hdf5Output::set_si_unit_attributes(const UnitSystem &units)
+  {
+    if (!units.is_si())
+      return;
+    set_attribute("/", "length_unit_m", units.length());
+    set_attribute("/", "time_unit_s", units.time());
+    set_attribute("/", "speed_unit_m_per_s", units.speed());
+    set_attribute("/", "force_unit", units.force());
+    set_attribute("/", "force_unit_name", units.force_name());
+    set_attribute("/", "energy_unit", units.force() * units.length());
+    set_attribute("/",
+                  "energy_unit_name",
+                  units.force_name() == "N" ? "J" : "J/m");
   }
 
   void

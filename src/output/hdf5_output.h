@@ -8,6 +8,7 @@
 namespace DiskImpact
 {
   class CsvTable;
+  class UnitSystem;
 
   /**
    * An HDF5 result file of named groups holding 1-D double datasets (table
@@ -70,6 +71,16 @@ namespace DiskImpact
     set_attribute(const std::string &group,
                   const std::string &name,
                   const std::string &value);
+
+    /**
+     * For an SI run (@p units), root attributes with the SI values of the
+     * units the file's numbers are in: length_unit_m (R), time_unit_s
+     * (R/c), speed_unit_m_per_s (c), force_unit with force_unit_name ("N"
+     * for a sphere, "N/m" for a disk), energy_unit (force times length, "J"
+     * or "J/m"). Nothing for a dimensionless run.
+     */
+    void
+    set_si_unit_attributes(const UnitSystem &units);
 
     /// Write the file to FILENAME (whole or not at all); no writes after
     /// this.

@@ -1,5 +1,6 @@
 #include "output/output_directory.h"
 
+#include "base/parameter_json.h"
 #include "base/run_error.h"
 #include "output/atomic_file.h"
 #include "output/file_lock.h"
@@ -91,9 +92,7 @@ namespace DiskImpact
                                  ParameterHandler::KeepDeclarationOrder));
         });
       write_atomically(path_name + "/used_parameters.json",
-                       [&](std::ostream &out) {
-                         prm.print_parameters(out, ParameterHandler::JSON);
-                       });
+                       parameters_as_json(prm, ParameterHandler::JSON));
     });
   }
 } // namespace DiskImpact

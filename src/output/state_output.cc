@@ -4,6 +4,7 @@
 #include "elasticity/material.h"
 #include "elasticity/stress_postprocessor.h"
 #include "output/revolved_view.h"
+#include "output/vtu_record.h"
 
 #include <deal.II/numerics/data_out.h>
 
@@ -15,12 +16,29 @@ namespace DiskImpact
 
   namespace
   {
-    /// DataOut with the field names and kinds public, for RevolvedView.
+    /// DataOut with the field names and kinds public, for RevolvedView,
+    /// and its patches scalable to the units of the files.
     class MeridianOutput : public DataOut<2>
     {
     public:
       using DataOut<2>::get_dataset_names;
       using DataOut<2>::get_nonscalar_data_ranges;
+
+      /// Displacements and coordinates times scales.length, stresses
+      /// times scales.stress.
+      void
+      scale(const FieldScales &scales)
+      {
+        if (scales.length == 1. && scales.stress == 1.)
+          return;
+        scale_patches(this->patches,
+                      get_dataset_names(),
+                      scales.length,
+                      [&](const std::string &name) {
+                        return name == "displacement" ? scales.length :
+                                                        scales.stress;
+                      });
+      }
     };
 
     /// The patches of the displacement and its stresses (the
@@ -29,7 +47,8 @@ namespace DiskImpact
     {
       StatePatches(const ElasticityOperator         &op,
                    const std::vector<Material>      &material,
-                   const PETScWrappers::MPI::Vector &ghosted_u)
+                   const PETScWrappers::MPI::Vector &ghosted_u,
+                   const FieldScales                &scales)
           : stress(material)
           , stress_scalars(material)
       {
@@ -45,6 +64,7 @@ namespace DiskImpact
         data_out.build_patches(op.get_mapping(),
                                op.degree(),
                                DataOut<2>::curved_inner_cells);
+        data_out.scale(scales);
       }
 
       const StressPostprocessor        stress;
@@ -68,16 +88,16 @@ namespace DiskImpact
                        const PETScWrappers::MPI::Vector &ghosted_u,
                        const std::string                &directory,
                        const std::string                &basename,
-                       const unsigned int                index)
+                       const unsigned int                index,
+                       const FieldScales                &scales)
   {
-    StatePatches state(op, material, ghosted_u);
+    StatePatches state(op, material, ghosted_u, scales);
     state.data_out.set_flags(vtu_flags());
-    return state.data_out.write_vtu_with_pvtu_record(
-      directory + "/",
-      basename,
-      index,
-      op.get_dof_handler().get_communicator(),
-      4);
+    return write_vtu_record(state.data_out,
+                            directory,
+                            basename,
+                            index,
+                            op.get_dof_handler().get_communicator());
   }
 
   std::pair<std::string, std::string>
@@ -89,14 +109,15 @@ namespace DiskImpact
                                     const double       angle_degrees,
                                     const std::string &directory,
                                     const std::string &basename,
-                                    const unsigned int index)
+                                    const unsigned int index,
+                                    const FieldScales &scales)
   {
     // One set of patches (the stresses evaluated once) for both files.
-    StatePatches state(op, material, ghosted_u);
+    StatePatches state(op, material, ghosted_u, scales);
     state.data_out.set_flags(vtu_flags());
     const MPI_Comm    communicator = op.get_dof_handler().get_communicator();
-    const std::string flat         = state.data_out.write_vtu_with_pvtu_record(
-      directory + "/", basename, index, communicator, 4);
+    const std::string flat         = write_vtu_record(
+      state.data_out, directory, basename, index, communicator);
     // About one sector per 10 degrees.
     const auto sectors =
       static_cast<unsigned int>(std::max(1., std::ceil(angle_degrees / 10.)));
@@ -104,13 +125,13 @@ namespace DiskImpact
                       state.data_out.get_dataset_names(),
                       state.data_out.get_nonscalar_data_ranges(),
                       "hoop_stress",
-                      centre,
-                      radius,
+                      centre * scales.length,
+                      radius * scales.length,
                       angle_degrees * M_PI / 180.,
                       sectors);
     view.set_flags(vtu_flags());
-    return {flat,
-            view.write_vtu_with_pvtu_record(
-              directory + "/", basename + "_3d", index, communicator, 4)};
+    return {
+      flat,
+      write_vtu_record(view, directory, basename + "_3d", index, communicator)};
   }
 } // namespace DiskImpact

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "base/unit_system.h"
+
 #include <deal.II/base/point.h>
 
 #include <deal.II/lac/petsc_vector.h>
@@ -19,8 +21,10 @@ namespace DiskImpact
    * Write a displacement field, its stress tensor and the scalar stress
    * measures (von Mises, principal stresses, pressure; see
    * StressScalarsPostprocessor) with deal.II's DataOut on curved patches of
-   * the element degree, as DIRECTORY/BASENAME_NNN.pvtu with one .vtu per
-   * rank; returns the .pvtu's name relative to @p directory.
+   * the element degree, as DIRECTORY/BASENAME_NNNN.pvtu with one .vtu per
+   * rank (write_vtu_record()), coordinates and displacements times
+   * @p scales.length, stresses times @p scales.stress; returns the .pvtu's
+   * name relative to @p directory.
    */
   std::string
   write_deformed_state(const ElasticityOperator                 &op,
@@ -28,15 +32,17 @@ namespace DiskImpact
                        const dealii::PETScWrappers::MPI::Vector &ghosted_u,
                        const std::string                        &directory,
                        const std::string                        &basename,
-                       unsigned int                              index);
+                       unsigned int                              index,
+                       const FieldScales                        &scales = {});
 
   /**
    * write_deformed_state() for a sphere (Material axisymmetric), and from
    * the same patches a 3D view: the meridian revolved about its axis
    * through @p angle_degrees (RevolvedView), about one sector per 10
    * degrees; the sphere's centre @p centre and radius @p radius find its
-   * surface. Writes DIRECTORY/BASENAME_NNN.pvtu and BASENAME_3d_NNN.pvtu;
-   * returns both names relative to @p directory.
+   * surface. Writes DIRECTORY/BASENAME_NNNN.pvtu and BASENAME_3d_NNNN.pvtu,
+   * scaled as write_deformed_state(); returns both names relative to
+   * @p directory.
    */
   std::pair<std::string, std::string>
   write_deformed_and_revolved_state(
@@ -48,5 +54,6 @@ namespace DiskImpact
     double                                    angle_degrees,
     const std::string                        &directory,
     const std::string                        &basename,
-    unsigned int                              index);
+    unsigned int                              index,
+    const FieldScales                        &scales = {});
 } // namespace DiskImpact

@@ -26,7 +26,8 @@ namespace DiskImpact
     /// When a collision ends.
     enum class EndCriterion
     {
-      force,  ///< the total force returns to zero (seed 002: the correct one)
+      force, ///< the total force returns to zero (Schwager & Pöschel 2007: the
+             ///< correct one)
       overlap ///< the overlap returns to zero (admits attractive forces)
     };
 
@@ -39,11 +40,11 @@ namespace DiskImpact
     };
 
     /**
-     * The 1-DOF collision m xi'' + F(xi) + A xi' F'(xi) = 0 (seed 000, eq. 4
-     * with the dissipative force of the Kelvin-Voigt kind), from xi = 0,
-     * xi' = @p velocity > 0, integrated with Boost.Odeint's Dormand-Prince
-     * stepper with dense output (tolerance @p tolerance); the end of the
-     * collision is located in the dense output by bisection.
+     * The 1-DOF collision m xi'' + F(xi) + A xi' F'(xi) = 0 (Schwager 2007, eq.
+     * 4 with the dissipative force of the Kelvin-Voigt kind), from xi = 0, xi'
+     * = @p velocity > 0, integrated with Boost.Odeint's Dormand-Prince stepper
+     * with dense output (tolerance @p tolerance); the end of the collision is
+     * located in the dense output by bisection.
      */
     Collision
     collide(double          mass,
@@ -58,8 +59,8 @@ namespace DiskImpact
      * relaxation time @p relaxation_time, quasistatic (docs/sphere.md,
      * "Kelvin-Voigt unloading"): u + tau u' is the elastic field of the
      * current load, so while the contact grows (xi' >= 0) the force is
-     * F(xi) + tau xi' F'(xi) (Lee and Radok; seed 003's eq. 5 with A = tau),
-     * and while it shrinks the edge must stay free of tension, which sets
+     * F(xi) + tau xi' F'(xi) (Lee and Radok; Ramírez et al.'s eq. 5 with A =
+     * tau), and while it shrinks the edge must stay free of tension, which sets
      * the elastic contact of the approach xi + tau xi': F(xi + tau xi')
      * (zero once xi + tau xi' <= 0). Returned as f_d = total - F(xi) for
      * collide().

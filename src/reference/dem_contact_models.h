@@ -27,11 +27,11 @@ namespace DiskImpact
     liggghts_hertz_input(double epsilon);
 
     /**
-     * The viscoelastic sphere (Brilliantov et al., seed 003) in LAMMPS'
-     * 'pair_style granular' ('hertz/material E eta_n0 nu ... damping
+     * The viscoelastic sphere (Brilliantov et al., Ramírez et al. 1999) in
+     * LAMMPS' 'pair_style granular' ('hertz/material E eta_n0 nu ... damping
      * viscoelastic'): LAMMPS's damping force eta_n0 a m_eff d' with the
      * contact radius a = sqrt(R_eff d) equals A dF/dt = 2 A E_eff a d' of
-     * seed 003 for eta_n0 = 2 A E_eff / m_eff.
+     * Ramírez et al. 1999 for eta_n0 = 2 A E_eff / m_eff.
      */
     /// Restitution and contact time (overlap back to zero) of a collision.
     struct LinearDashpotCollision

@@ -8,7 +8,8 @@ namespace DiskImpact
 {
   namespace Reference
   {
-    /// Kinds of free-body modes (disk: seed 001, section 2.2; sphere: Lamb).
+    /// Kinds of free-body modes (disk: Gerl & Zippelius 1999, section 2.2;
+    /// sphere: Lamb).
     enum class ModeFamily
     {
       rigid,     ///< omega = 0: translations and the rotation

@@ -36,18 +36,16 @@ namespace DiskImpact
 
     /**
      * Shape of one free-disk eigenmode of the set symmetric about the
-     * impact axis (seed 001, eqs. 19, 27 with the kappa/kappa' of eq. 27
-     * corrected):
-     *   u_r   = [A k J_n'(k r) + n B J_n(k' r) / r] cos(n phi),
-     *   u_phi = -[n A J_n(k r) / r + B k' J_n'(k' r)] sin(n phi),
-     * k = kappa / R, k' = kappa' / R. (A, B) is the null vector of the
-     * traction-free conditions sigma_rr = sigma_rphi = 0 at r = R, scaled so
-     * that the mass-weighted norm is that of the rigid translation:
-     *   int_disk |u|^2 dA = pi R^2,
-     * i.e. rho int |u|^2 dA = m (seed 001, eq. 26 with R = 1, valid for
-     * every mode of the set, n = 0 included). The modal coordinate Q is then
-     * a length with modal mass m. Sign: the larger of the edge amplitudes
-     * C, S (eq. 28) is positive.
+     * impact axis (Gerl & Zippelius 1999, eqs. 19, 27 with the kappa/kappa' of
+     * eq. 27 corrected): u_r   = [A k J_n'(k r) + n B J_n(k' r) / r] cos(n
+     * phi), u_phi = -[n A J_n(k r) / r + B k' J_n'(k' r)] sin(n phi), k = kappa
+     * / R, k' = kappa' / R. (A, B) is the null vector of the traction-free
+     * conditions sigma_rr = sigma_rphi = 0 at r = R, scaled so that the
+     * mass-weighted norm is that of the rigid translation: int_disk |u|^2 dA =
+     * pi R^2, i.e. rho int |u|^2 dA = m (Gerl & Zippelius 1999, eq. 26 with R =
+     * 1, valid for every mode of the set, n = 0 included). The modal coordinate
+     * Q is then a length with modal mass m. Sign: the larger of the edge
+     * amplitudes C, S (eq. 28) is positive.
      */
     class FreeDiskModeShape
     {
@@ -69,7 +67,7 @@ namespace DiskImpact
       double
       kappa() const;
 
-      /// Coefficients (A, B) of seed 001, eq. 27 (normalised).
+      /// Coefficients (A, B) of Gerl & Zippelius 1999, eq. 27 (normalised).
       std::pair<double, double>
       coefficients() const;
 
@@ -77,16 +75,17 @@ namespace DiskImpact
       RadialProfile
       profile(double r) const;
 
-      /// C = u_r^{n,l}(R) (seed 001, eq. 28).
+      /// C = u_r^{n,l}(R) (Gerl & Zippelius 1999, eq. 28).
       double
       edge_radial_amplitude() const;
-      /// S = u_phi^{n,l}(R) (seed 001, eq. 28).
+      /// S = u_phi^{n,l}(R) (Gerl & Zippelius 1999, eq. 28).
       double
       edge_tangential_amplitude() const;
 
       /// Amplitudes of sigma_rr / E2 (of cos n phi) and sigma_rphi / E2 (of
       /// sin n phi) at r = R per unit modal coordinate Q / R; zero for an
-      /// eigenmode (seed 001, eqs. 15, 16 with sigma_rphi = 2 mu eps_rphi).
+      /// eigenmode (Gerl & Zippelius 1999, eqs. 15, 16 with sigma_rphi = 2 mu
+      /// eps_rphi).
       std::pair<double, double>
       boundary_tractions() const;
 

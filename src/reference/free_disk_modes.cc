@@ -61,7 +61,8 @@ namespace DiskImpact
     {
       // Radial profiles on the unit disk: u_r = f(r) cos(n phi),
       // u_phi = g(r) sin(n phi), each linear in the amplitudes (A, B) of
-      // seed 001, eq. 19. Evaluated at r = 1 with k = kappa, k' = kappa'.
+      // Gerl & Zippelius 1999, eq. 19. Evaluated at r = 1 with k = kappa, k' =
+      // kappa'.
       const int    n  = n_;
       const double k  = kappa;
       const double kp = kappa * wave_speed_ratio();
@@ -78,7 +79,8 @@ namespace DiskImpact
       const double dg[2] = {-n * (k * djl - jl), -kp * kp * ddjt};
 
       // sigma_rr / mu = (lambda/mu + 2) f' + (lambda/mu) (f + n g) / r,
-      // sigma_rphi / mu = g' - g / r - n f / r   (seed 001, eqs. 15, 16).
+      // sigma_rphi / mu = g' - g / r - n f / r   (Gerl & Zippelius 1999, eqs.
+      // 15, 16).
       const double lambda_over_mu = 2. * nu2 / (1. - nu2);
       double       s_rr[2], s_rphi[2];
       for (unsigned int c = 0; c < 2; ++c)

@@ -15,15 +15,16 @@ namespace DiskImpact
      * Analytic eigenfrequencies of a free elastic disk of radius R.
      *
      * With u = grad Phi + curl(Psi e_z), Phi = A J_n(k r) cos(n phi) and
-     * Psi = B J_n(k' r) sin(n phi) (seed 001, eqs. 17-19), the traction-free
-     * conditions sigma_rr = sigma_rphi = 0 at r = R are a 2x2 linear system
-     * in (A, B); its determinant vanishes at the eigenfrequencies. Here the
-     * determinant is built directly from the stresses (seed 001, eq. 16),
-     * not copied from the printed eq. 25; the printed forms of eqs. 20, 21
-     * and 25 are kept for comparison (see docs/seed-misprints.md).
+     * Psi = B J_n(k' r) sin(n phi) (Gerl & Zippelius 1999, eqs. 17-19), the
+     * traction-free conditions sigma_rr = sigma_rphi = 0 at r = R are a 2x2
+     * linear system in (A, B); its determinant vanishes at the
+     * eigenfrequencies. Here the determinant is built directly from the
+     * stresses (Gerl & Zippelius 1999, eq. 16), not copied from the printed eq.
+     * 25; the printed forms of eqs. 20, 21 and 25 are kept for comparison (see
+     * docs/theory/misprints.md).
      *
-     * kappa = omega R / c_L is the seed's dimensionless wave number (eq. 18
-     * with R = 1), kappa' = kappa c_L / c_T.
+     * kappa = omega R / c_L is Gerl & Zippelius' dimensionless wave number (eq.
+     * 18 with R = 1), kappa' = kappa c_L / c_T.
      */
     class FreeDiskModes : public FreeBodyModes
     {
@@ -47,13 +48,14 @@ namespace DiskImpact
       double
       boundary_determinant(unsigned int n, double kappa) const;
 
-      /// The seed's eq. 25 as printed.
+      /// Gerl & Zippelius' eq. 25 as printed.
       double
       printed_eq25(unsigned int n, double kappa) const;
-      /// The seed's eq. 20 as printed (radial family, R = 1).
+      /// Gerl & Zippelius' eq. 20 as printed (radial family, R = 1).
       double
       printed_eq20(double kappa) const;
-      /// The seed's eq. 21 as printed (torsional family, argument kappa').
+      /// Gerl & Zippelius' eq. 21 as printed (torsional family, argument
+      /// kappa').
       double
       printed_eq21(double kappa_prime) const;
 

@@ -5,15 +5,15 @@ namespace DiskImpact
   namespace Reference
   {
     /**
-     * The quasistatic contact law of a 2D disk on a rigid wall (seed 001,
-     * eq. 57; seed 000, eqs. 2-3) in dimensionless form: with the load
-     * x = P / (pi E2 R) and the compression d = delta / R,
+     * The quasistatic contact law of a 2D disk on a rigid wall (Gerl &
+     * Zippelius 1999, eq. 57; Schwager 2007, eqs. 2-3) in dimensionless form:
+     * with the load x = P / (pi E2 R) and the compression d = delta / R,
      *
      *   d = x [ln(4 / x) + C],
      *
-     * (equivalently delta = P/(pi E2) [ln(4 pi R E2 / P) + C]); the seed
-     * prints C = -1 - nu2. The constant depends on which compression is
-     * meant and on how the load is applied (docs/contact-law.md).
+     * (equivalently delta = P/(pi E2) [ln(4 pi R E2 / P) + C]); Gerl &
+     * Zippelius print C = -1 - nu2. The constant depends on which compression
+     * is meant and on how the load is applied (docs/contact-law.md).
      */
     class LogContactLaw
     {
@@ -29,7 +29,7 @@ namespace DiskImpact
 
       /**
        * The inverse x(d) on the physical branch (d increasing with x,
-       * x < 4 e^{C-1}) through the Lambert W function (seed 000, eq. 3):
+       * x < 4 e^{C-1}) through the Lambert W function (Schwager 2007, eq. 3):
        * x = -d / W_{-1}(-d e^{-C} / 4). Needs 0 < d < 4 e^{C-1}.
        */
       double
@@ -47,8 +47,8 @@ namespace DiskImpact
       double c;
     };
 
-    /// Hertz half-width a / R = 2 sqrt(x) of the contact zone (seed 001,
-    /// eq. 48: a^2 = 4 P R / (pi E2)).
+    /// Hertz half-width a / R = 2 sqrt(x) of the contact zone (Gerl & Zippelius
+    /// 1999, eq. 48: a^2 = 4 P R / (pi E2)).
     double
     hertz_half_width(double load);
 
@@ -56,7 +56,7 @@ namespace DiskImpact
      * The constant C of the law for the approach of the centre of mass
      * (the area mean of the displacement) of a disk pressed on the rigid
      * wall by a uniform body force, derived from Michell's stress field
-     * (seed 001, eqs. 50-53) with Hertz's contact (eq. 46):
+     * (Gerl & Zippelius 1999, eqs. 50-53) with Hertz's contact (eq. 46):
      *
      *   C_com = -2 ln 2 - (1 + nu2) / 4,
      *
@@ -67,8 +67,8 @@ namespace DiskImpact
     centre_of_mass_constant(double nu2);
 
     /// The constant C of the shortening of the diameter on the impact axis,
-    /// -1 for every Poisson ratio (docs/contact-law.md; seed 001, eq. 57
-    /// prints -1 - nu2).
+    /// -1 for every Poisson ratio (docs/contact-law.md; Gerl & Zippelius 1999,
+    /// eq. 57 prints -1 - nu2).
     double
     diameter_constant();
   } // namespace Reference

@@ -93,7 +93,7 @@ namespace DiskImpact
     ModalExpansionImpact::evaluate(const State &state, EdgeForces &forces) const
     {
       // Edge amplitudes per angular order: u_r(1, phi) = sum_n a_n cos n phi,
-      // u_phi(1, phi) = sum_n b_n sin n phi (seed 001, eq. 38).
+      // u_phi(1, phi) = sum_n b_n sin n phi (Gerl & Zippelius 1999, eq. 38).
       std::vector<double> a(n_orders, 0.), b(n_orders, 0.);
       for (unsigned int k = 0; k < omega.size(); ++k)
         {

@@ -15,8 +15,8 @@ namespace DiskImpact
       /// Half kick by the wall force, exact rotation of every oscillator and
       /// free drift of x0, half kick: symplectic, second order.
       strang_splitting,
-      /// Classical RK4 on the interaction-picture amplitudes q (seed 001,
-      /// eq. 44 corrected) and (x0, v), as in the seed.
+      /// Classical RK4 on the interaction-picture amplitudes q (Gerl &
+      /// Zippelius 1999, eq. 44 corrected) and (x0, v), as in the paper.
       runge_kutta_interaction_picture
     };
 
@@ -75,15 +75,13 @@ namespace DiskImpact
 
     /**
      * Collision of an elastic disk with a rigid wall in the modal expansion
-     * of seed 001, sections 3-4: rigid translation x0 plus the free-disk
-     * modes as independent oscillators (modal mass m, eqs. 26, 32, 34),
-     * pushed along the edge by the wall potential
-     *   U = int w(xi(phi)) R d phi,  w(xi) = (E2 / alpha) e^{alpha xi / R},
-     * xi the x-coordinate of the deformed edge (eq. 40), the wall at x = 0.
-     * Equations of motion (eqs. 41, 42, 45 corrected):
-     *   m x0'' = -int e^{alpha xi} d phi,
-     *   m (Q_k'' + omega_k^2 Q_k)
-     *     = -int e^{alpha xi} (C_k cos n phi cos phi - S_k sin n phi sin phi)
+     * of Gerl & Zippelius 1999, sections 3-4: rigid translation x0 plus the
+     * free-disk modes as independent oscillators (modal mass m, eqs. 26, 32,
+     * 34), pushed along the edge by the wall potential U = int w(xi(phi)) R d
+     * phi,  w(xi) = (E2 / alpha) e^{alpha xi / R}, xi the x-coordinate of the
+     * deformed edge (eq. 40), the wall at x = 0. Equations of motion (eqs. 41,
+     * 42, 45 corrected): m x0'' = -int e^{alpha xi} d phi, m (Q_k'' + omega_k^2
+     * Q_k) = -int e^{alpha xi} (C_k cos n phi cos phi - S_k sin n phi sin phi)
      *       d phi.
      * The edge displacement is a sum over angular orders n: per step the
      * modal amplitudes are gathered per order and the edge sums are products

@@ -35,9 +35,9 @@ namespace DiskImpact
 
     /**
      * Rayleigh's low-velocity estimate of the energy an elastic disk's
-     * collision leaves in its vibrations (seed 001, section 5, eqs. 62-68):
-     * the quasistatic force P(t) of the 1-DOF collision m delta'' =
-     * -P(delta) (log law with the constant @p constant) acts at the contact
+     * collision leaves in its vibrations (Gerl & Zippelius 1999, section 5,
+     * eqs. 62-68): the quasistatic force P(t) of the 1-DOF collision m delta''
+     * = -P(delta) (log law with the constant @p constant) acts at the contact
      * point phi = 0 on every mode of @p shapes, each an oscillator
      * m (Q'' + omega^2 Q) = -C P(t), C the mode's edge radial amplitude
      * (eq. 28; the shapes have modal mass m). After the collision the mode
@@ -91,8 +91,9 @@ namespace DiskImpact
      * contact time, compression and epsilon keep the dynamics the 1-DOF model
      * omits. Classical RK4 with @p steps_per_period steps per shortest modal
      * period and at least 2000 per 1-DOF contact time; the collision ends when
-     * the force returns to zero (seed 002) and does not rise again within a
-     * fifth of the contact time. Units R = rho = E2 = 1 (m = pi, c = 1).
+     * the force returns to zero (Schwager & Pöschel 2007) and does not rise
+     * again within a fifth of the contact time. Units R = rho = E2 = 1 (m = pi,
+     * c = 1).
      */
     RayleighImpact
     rayleigh_impact(double velocity,

@@ -8,7 +8,7 @@ namespace DiskImpact
   {
     /**
      * The coefficients c_k, k = 0 ... @p n - 1, of the first-order
-     * restitution series (seed 000, eq. 48):
+     * restitution series (Schwager 2007, eq. 48):
      *
      *   c_k = a_k int_0^1 dy sqrt(1 - y^2) [2 y^2 ln y / (1 - y^2)]^k,
      *
@@ -30,8 +30,8 @@ namespace DiskImpact
     schwager_c1_closed_form();
 
     /**
-     * The coefficients d_k of the second-order term (seed 000, eqs. 78-79),
-     * one for each c_k:
+     * The coefficients d_k of the second-order term (Schwager 2007, eqs.
+     * 78-79), one for each c_k:
      *
      *   d_0 = -c_0^2,
      *   d_k = -2 sum_{i<k} (k - i - 1) c_i c_{k-i-1} - sum_{i<=k} c_i c_{k-i}.
@@ -41,7 +41,7 @@ namespace DiskImpact
 
     /**
      * The largest scaled impact velocity for which the elastic law
-     * x = -F ln F (seed 000, eq. 18) can stop the disk: the largest
+     * x = -F ln F (Schwager 2007, eq. 18) can stop the disk: the largest
      * potential energy is reached at F = 1/e, where -2 e v^2 = -1/e (eq. 50),
      * so v_max = 1 / (sqrt(2) e).
      */
@@ -49,7 +49,7 @@ namespace DiskImpact
     schwager_maximum_scaled_velocity();
 
     /**
-     * The scaled impact velocity v = (g / c) e^{-C} / 4 (seed 000, eq. 12)
+     * The scaled impact velocity v = (g / c) e^{-C} / 4 (Schwager 2007, eq. 12)
      * of a disk hitting a rigid wall at speed g, for the log law
      * delta / R = x_P [ln(4 / x_P) + C], x_P = P / (pi E2 R), and the mass
      * m = rho pi R^2; @p impact_speed_over_wave_speed is g / c,
@@ -60,7 +60,7 @@ namespace DiskImpact
     schwager_scaled_velocity(double impact_speed_over_wave_speed,
                              double constant);
 
-    /// The scaled damping alpha = A c / R (seed 000, eq. 13), A the
+    /// The scaled damping alpha = A c / R (Schwager 2007, eq. 13), A the
     /// Kelvin-Voigt relaxation time.
     double
     schwager_scaled_damping(double relaxation_time,
@@ -69,7 +69,7 @@ namespace DiskImpact
 
     /**
      * u = -W_{-1}(-2 e v^2) >= 1, the variable of the restitution series
-     * (seed 000, eqs. 50, 56). The seed's "W_0" is the branch W <= -1,
+     * (Schwager 2007, eqs. 50, 56). Schwager's "W_0" is the branch W <= -1,
      * W_{-1} in the usual notation, since 1 + 2 ln F_max = W and the
      * physical branch of eq. 18 has F < 1/e. Throws std::domain_error
      * unless 0 < v <= v_max.
@@ -79,9 +79,9 @@ namespace DiskImpact
 
     /**
      * The coefficient of restitution of the viscoelastic disk
-     * x'' + F(x) + alpha x' F'(x) = 0, x = -F ln F (seed 000, eqs. 14, 18),
-     * as the power series epsilon = 1 + alpha f_1(v) + alpha^2 f_2(v) + ...
-     * (eq. 62). The collision ends when the overlap x returns to zero: the
+     * x'' + F(x) + alpha x' F'(x) = 0, x = -F ln F (Schwager 2007, eqs. 14,
+     * 18), as the power series epsilon = 1 + alpha f_1(v) + alpha^2 f_2(v) +
+     * ... (eq. 62). The collision ends when the overlap x returns to zero: the
      * energy balance (eq. 21) and the time reversal (eqs. 63-67) both assume
      * it. The force criterion ends it earlier, with an epsilon larger by
      * O(alpha^2) (end_criterion_difference()).
@@ -99,24 +99,24 @@ namespace DiskImpact
       d_coefficients() const;
 
       /// f_1(v) = -sqrt(8) sum_k c_k u^{-k-1/2}, u = -W_{-1}(-2 e v^2)
-      /// (seed 000, eq. 72); 0 < v <= v_max.
+      /// (Schwager 2007, eq. 72); 0 < v <= v_max.
       double
       first_order_term(double scaled_velocity) const;
 
       /**
-       * f_2(v) = 4 / (1 - u) sum_k d_k u^{-k} (seed 000, eq. 77 with
+       * f_2(v) = 4 / (1 - u) sum_k d_k u^{-k} (Schwager 2007, eq. 77 with
        * 1 + W = 1 - u < 0), which equals (f_1^2 + v f_1 f_1') / 2 (eq. 71);
        * 0 < v < v_max (f_2 diverges at v_max).
        */
       double
       second_order_term(double scaled_velocity) const;
 
-      /// epsilon = 1 + alpha f_1(v), error O(alpha^2) (seed 000, eq. 56).
+      /// epsilon = 1 + alpha f_1(v), error O(alpha^2) (Schwager 2007, eq. 56).
       double
       first_order(double alpha, double scaled_velocity) const;
 
       /// epsilon = 1 + alpha f_1(v) + alpha^2 f_2(v), error O(alpha^3)
-      /// (seed 000, eq. 80).
+      /// (Schwager 2007, eq. 80).
       double
       second_order(double alpha, double scaled_velocity) const;
 
@@ -136,9 +136,9 @@ namespace DiskImpact
        * epsilon_force - epsilon_overlap = alpha^2 (-1 - 2 s) / (4 s^2)
        * + O(alpha^3), s = W_{-1}(-e alpha v): the difference between a
        * collision ending when the total force F + alpha x' F' returns to
-       * zero (seed 002, eq. 17) and one ending when the overlap does. The
-       * force vanishes at F(1 + ln F) = -alpha w, w = |x'| = v + O(alpha),
-       * i.e. 1 + ln F = s; from there to x = 0 the total force is
+       * zero (Schwager & Pöschel 2007, eq. 17) and one ending when the overlap
+       * does. The force vanishes at F(1 + ln F) = -alpha w, w = |x'| = v +
+       * O(alpha), i.e. 1 + ln F = s; from there to x = 0 the total force is
        * attractive and takes the kinetic energy alpha w F - Phi(F)
        * = -alpha^2 w^2 (1 + 2 s) / (4 s^2) (eq. 36 for Phi). Needs
        * alpha v <= e^{-2}.

@@ -42,7 +42,7 @@ namespace DiskImpact
      * Hertz's half-width (disk) or contact radius (sphere) of two bodies
      * pressed together by @p force (per unit thickness for disks), with the
      * combined curvature and compliance: a^2 = 4 P R_eff / (pi E_eff)
-     * (seed 001, eq. 48), a^3 = 3 P R_eff / (4 E_eff).
+     * (Gerl & Zippelius 1999, eq. 48), a^3 = 3 P R_eff / (4 E_eff).
      */
     double
     two_body_half_width(bool               sphere,
@@ -59,7 +59,7 @@ namespace DiskImpact
      *   delta = sum_i P / (pi E2_i) [2 ln(4 R_i / a) + C_i]
      *
      * (each term is the law delta/R = x [ln(4/x) + C] of LogContactLaw
-     * written with a; seed 001, eq. 57). Zero for @p force = 0.
+     * written with a; Gerl & Zippelius 1999, eq. 57). Zero for @p force = 0.
      */
     double
     two_disk_approach(double             force,

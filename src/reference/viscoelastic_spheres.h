@@ -7,9 +7,9 @@ namespace DiskImpact
   namespace Reference
   {
     /**
-     * The Hertz law of two elastic spheres (seed 003, eq. 2) as a force law:
-     * F(xi) = rho xi^{3/2}, F'(xi) = (3/2) rho xi^{1/2}; zero for xi <= 0.
-     * With the dissipation A of collide() it gives the viscoelastic force
+     * The Hertz law of two elastic spheres (Ramírez et al. 1999, eq. 2) as a
+     * force law: F(xi) = rho xi^{3/2}, F'(xi) = (3/2) rho xi^{1/2}; zero for xi
+     * <= 0. With the dissipation A of collide() it gives the viscoelastic force
      * of eq. 3, (3/2) A rho xi' xi^{1/2} (eq. 13).
      */
     ForceLaw
@@ -17,14 +17,14 @@ namespace DiskImpact
 
     /**
      * C_1 = sqrt(pi) Gamma(3/5) / (2^{1/5} 5^{2/5} Gamma(21/10))
-     * = 1.1534489 (seed 003, eqs. 30-31): (g / g*)^{1/5} = C_1 (3/2) A
-     * (rho / m_eff)^{2/5} g^{1/5}.
+     * = 1.1534489 (Ramírez et al. 1999, eqs. 30-31): (g / g*)^{1/5} = C_1 (3/2)
+     * A (rho / m_eff)^{2/5} g^{1/5}.
      */
     double
     sphere_c1();
 
     /**
-     * The characteristic velocity g* of seed 003, eq. 30:
+     * The characteristic velocity g* of Ramírez et al. 1999, eq. 30:
      * (g*)^{-1/5} = C_1 (3/2) A (rho / m_eff)^{2/5}.
      */
     double
@@ -33,7 +33,7 @@ namespace DiskImpact
                                    double dissipation);
 
     /**
-     * The expansion variable of seed 003, eq. 32: u = (g / g*)^{1/5}
+     * The expansion variable of Ramírez et al. 1999, eq. 32: u = (g / g*)^{1/5}
      * = C_1 (3/2) A (rho / m_eff)^{2/5} g^{1/5}, for the impact velocity
      * @p velocity = g. The restitution coefficient of m_eff xi'' +
      * rho xi^{3/2} + (3/2) A rho xi' xi^{1/2} = 0 depends on the parameters
@@ -66,8 +66,8 @@ namespace DiskImpact
     constexpr SphereSeriesCoefficients
       verified_sphere_coefficients{1., 0.6, 0.3407290271, 0.1970206380};
 
-    /// The coefficients as printed in seed 003, eq. 33 (for the misprint
-    /// record): a_3 = 0.315119, a_4 = 0.161167, both wrong.
+    /// The coefficients as printed in Ramírez et al. 1999, eq. 33 (for the
+    /// misprint record): a_3 = 0.315119, a_4 = 0.161167, both wrong.
     constexpr SphereSeriesCoefficients printed_sphere_coefficients{1.,
                                                                    0.6,
                                                                    0.315119,
@@ -84,12 +84,12 @@ namespace DiskImpact
     sphere_delayed_recovery_coefficient();
 
     /**
-     * epsilon(u) from the series of seed 003, eq. 32, to fourth order.
-     * EndCriterion::overlap gives eq. 32 itself, the seed's setting (eq. 10
-     * ends the collision at xi = 0); its first omitted term is -a_5 u^5,
-     * a_5 = 0.117. EndCriterion::force adds the delayed-recovery terms
-     * k u^{5/2} (1 - (3/2) u), k = sphere_delayed_recovery_coefficient();
-     * its first omitted term is (51/40) k u^{9/2}.
+     * epsilon(u) from the series of Ramírez et al. 1999, eq. 32, to fourth
+     * order. EndCriterion::overlap gives eq. 32 itself, the paper's setting
+     * (eq. 10 ends the collision at xi = 0); its first omitted term is -a_5
+     * u^5, a_5 = 0.117. EndCriterion::force adds the delayed-recovery terms k
+     * u^{5/2} (1 - (3/2) u), k = sphere_delayed_recovery_coefficient(); its
+     * first omitted term is (51/40) k u^{9/2}.
      */
     double
     sphere_restitution_series(double                          scaled_velocity,
@@ -108,15 +108,15 @@ namespace DiskImpact
     };
 
     /**
-     * d_1 ... d_5 from a_2, a_3, a_4 by seed 003, Table I (a_1 = 1): the
-     * [1/4] Pade approximant that matches eq. 32 through u^4 and has a zero
+     * d_1 ... d_5 from a_2, a_3, a_4 by Ramírez et al. 1999, Table I (a_1 = 1):
+     * the [1/4] Pade approximant that matches eq. 32 through u^4 and has a zero
      * u^5 coefficient (a_5 = 0).
      */
     SpherePadeCoefficients
     sphere_pade_coefficients(const SphereSeriesCoefficients &coefficients);
 
     /**
-     * epsilon(u) from the Pade approximant of seed 003, eq. 35,
+     * epsilon(u) from the Pade approximant of Ramírez et al. 1999, eq. 35,
      * (1 + d_1 u) / (1 + d_2 u + d_3 u^2 + d_4 u^3 + d_5 u^4), with the d_k
      * of sphere_pade_coefficients().
      */
@@ -126,8 +126,8 @@ namespace DiskImpact
                               verified_sphere_coefficients);
 
     /**
-     * epsilon(u) from the collision ODE (seed 003, eq. 5) by collide(), in
-     * units m_eff = rho = g = 1, where A = u / ((3/2) C_1).
+     * epsilon(u) from the collision ODE (Ramírez et al. 1999, eq. 5) by
+     * collide(), in units m_eff = rho = g = 1, where A = u / ((3/2) C_1).
      */
     double
     sphere_restitution_ode(double       scaled_velocity,

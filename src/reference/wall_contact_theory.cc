@@ -11,7 +11,8 @@ namespace DiskImpact
   {
     namespace
     {
-      /// Hertz's 2D contact and the logarithmic law (seed 001, eqs. 46-57).
+      /// Hertz's 2D contact and the logarithmic law (Gerl & Zippelius 1999,
+      /// eqs. 46-57).
       class DiskTheory : public WallContactTheory
       {
       public:
@@ -28,7 +29,7 @@ namespace DiskImpact
         double
         pressure(const double t, const double load) const override
         {
-          // p = 2 P / (pi a^2) sqrt(a^2 - t^2) (seed 001, eq. 46)
+          // p = 2 P / (pi a^2) sqrt(a^2 - t^2) (Gerl & Zippelius 1999, eq. 46)
           const double a = half_width(load);
           return std::abs(t) < a ?
                    2. / (M_PI * a * a) * std::sqrt(a * a - t * t) :

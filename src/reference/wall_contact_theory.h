@@ -75,7 +75,8 @@ namespace DiskImpact
        * A delta' F' = 0 with A = @p relaxation_time (the viscous stress
        * tau C : eps_dot is tau times the elastic stress of the velocity, so
        * quasistatically the viscous force is tau dF/dt; docs/sphere.md),
-       * ended when the total force returns to zero (seed 002), or with
+       * ended when the total force returns to zero (Schwager & Pöschel 2007),
+       * or with
        * @p end.
        */
       Collision

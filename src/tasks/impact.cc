@@ -3,6 +3,7 @@
 #include "base/input_error.h"
 #include "base/parameter_lists.h"
 #include "base/parameters.h"
+#include "base/renamed_entries.h"
 #include "body/geometry.h"
 #include "output/csv_table.h"
 #include "reference/hertz_impact.h"
@@ -38,7 +39,7 @@ namespace DiskImpact
       if (text == "exact")
         return sphere ? 0. : Reference::centre_of_mass_constant(nu2);
       require(!(sphere && text == "fit"),
-              "Impact: 'Contact law constant = fit' is the disk's log-law "
+              "Impact: 'One-DOF law constant = fit' is the disk's log-law "
               "fit; a sphere takes 'exact' (Hertz, D = 0) or a number D");
       if (text == "fit")
         return -1. - 2. / M_PI - nu2 / 4.;
@@ -48,7 +49,7 @@ namespace DiskImpact
       stream >> value;
       require(!stream.fail() && (stream >> std::ws).eof() &&
                 std::isfinite(value),
-              "Impact: 'Contact law constant' must be 'exact', 'fit' or a "
+              "Impact: 'One-DOF law constant' must be 'exact', 'fit' or a "
               "finite number, got '" +
                 text + "'");
       return value;
@@ -97,11 +98,14 @@ namespace DiskImpact
                       "largest force at this speed. A fixed value keeps one "
                       "mesh for every speed of a sweep (epsilon(v) on one "
                       "discretization).");
-    prm.declare_entry("Contact law constant",
+    prm.declare_entry("One-DOF law constant",
                       "exact",
                       Patterns::Anything(),
                       "Constant of the wall law in the 1-DOF reference model "
-                      "(time-step estimate, comparison). Disk: C of the log "
+                      "(the quasistatic one-degree-of-freedom collision that "
+                      "estimates the contact time, the time step and the "
+                      "graded mesh, and that the results are compared with). "
+                      "Disk: C of the log "
                       "law, 'exact' for the centre-of-mass law C = -2 ln 2 - "
                       "(1 + nu2)/4, 'fit' for the earlier fit C = -1 - 2/pi "
                       "- nu2/4, or a number. Sphere: the finite-size constant "
@@ -124,13 +128,13 @@ namespace DiskImpact
                       "revolved about the axis through this angle in degrees "
                       "(the surface and the two cut planes; 270 shows the "
                       "inside); 0: none.");
-    prm.declare_entry("Mode energies",
+    prm.declare_entry("Number of projected modes",
                       "20",
                       Patterns::Integer(0, 400),
                       "Task 'impact': project the vibration on this many "
                       "lowest elastic eigenmodes of the same discretization "
                       "(mode_energies.csv: after the impact and averaged over "
-                      "the collision, as seed 001's Table 1); 0: none.");
+                      "the collision, as Gerl & Zippelius' Table 1); 0: none.");
     prm.declare_entry("Velocities",
                       "0.005, 0.01, 0.02, 0.05, 0.1, 0.2, 0.3",
                       Patterns::List(Patterns::Double(), 0),
@@ -152,7 +156,7 @@ namespace DiskImpact
                       "Task 'sweep' with 'Kind = body' in subsection Partner: "
                       "the partner's radii (as its 'Radius') [R], each with "
                       "every velocity; empty: the partner's 'Radius'.");
-    prm.declare_entry("Error estimate",
+    prm.declare_entry("Convergence study per point",
                       "true",
                       Patterns::Bool(),
                       "Task 'sweep': run a convergence study (subsection "
@@ -168,11 +172,24 @@ namespace DiskImpact
                       "(restitution.csv) and compute only the others; a "
                       "table of other parameters there is an error. false: "
                       "start afresh, removing the earlier table.");
-    prm.declare_entry("Margin",
+    prm.declare_entry("Time after contact",
                       "0.2",
                       Patterns::Double(0., 10.),
                       "Time simulated after the contact force has returned to "
                       "zero, as a fraction of the contact time [-].");
+    declare_renamed_entry(prm,
+                          "Impact",
+                          "One-DOF law constant",
+                          "Contact law constant");
+    declare_renamed_entry(prm,
+                          "Impact",
+                          "Number of projected modes",
+                          "Mode energies");
+    declare_renamed_entry(prm,
+                          "Impact",
+                          "Convergence study per point",
+                          "Error estimate");
+    declare_renamed_entry(prm, "Impact", "Time after contact", "Margin");
     prm.leave_subsection();
   }
 
@@ -185,16 +202,16 @@ namespace DiskImpact
     grading                 = prm.get_double("Grading");
     fine_zone_radius        = prm.get_double("Fine zone radius");
     graded_half_width       = prm.get_double("Graded half-width");
-    contact_law_constant    = prm.get("Contact law constant");
-    margin                  = prm.get_double("Margin");
+    contact_law_constant    = prm.get("One-DOF law constant");
+    margin                  = prm.get_double("Time after contact");
     output_interval         = prm.get_integer("Output interval");
     revolved_view_angle     = prm.get_double("Revolved view");
-    projected_modes         = prm.get_integer("Mode energies");
+    projected_modes         = prm.get_integer("Number of projected modes");
     sweep_velocities        = get_double_list(prm, "Velocities");
     sweep_poisson_ratios    = get_double_list(prm, "Poisson ratios");
     sweep_relaxation_times  = get_double_list(prm, "Relaxation times");
     sweep_partner_radii     = get_double_list(prm, "Partner radii");
-    error_estimate          = prm.get_bool("Error estimate");
+    error_estimate          = prm.get_bool("Convergence study per point");
     resume_sweep            = prm.get_bool("Resume");
     prm.leave_subsection();
     check_velocities(1.);
@@ -319,7 +336,7 @@ namespace DiskImpact
                                const double      contact_radius) const
   {
     require(body.geometry.is_axisymmetric(),
-            "Impact: 'Contact law constant = finite size' is the sphere's "
+            "Impact: 'One-DOF law constant = finite size' is the sphere's "
             "law; a disk takes 'exact', 'fit' or a number");
     // D = D0 + D1 ln(a/R) (docs/sphere.md, "The finite-size term, derived").
     return Reference::sphere_finite_size_term(
@@ -350,9 +367,9 @@ namespace DiskImpact
         estimate.largest_compression  = one_dof.max_compression;
         estimate.one_dof_contact_time = one_dof.contact_time * c / R;
         estimate.one_dof_delta_max    = one_dof.max_compression / R;
-        // With Kelvin-Voigt viscosity: m xi'' + F + tau xi' F' = 0 (seed
-        // 000, eq. 4, and seed 003, eq. 5, with A = tau), ended when the
-        // force returns to zero.
+        // With Kelvin-Voigt viscosity: m xi'' + F + tau xi' F' = 0 (Schwager
+        // 2007, eq. 4, and Ramírez et al. 1999, eq. 5, with A = tau), ended
+        // when the force returns to zero.
         const double tau = material.relaxation_time();
         if (tau > 0.)
           {
@@ -360,7 +377,7 @@ namespace DiskImpact
               theory->viscous_impact(mass, v0, E2, R, C, tau);
             estimate.one_dof_epsilon = viscous.epsilon;
             // The same collision ended where the overlap returns to zero
-            // (the seeds' criterion, admitting an attractive force).
+            // (the papers' criterion, admitting an attractive force).
             estimate.one_dof_epsilon_overlap =
               theory
                 ->viscous_impact(
@@ -385,7 +402,7 @@ namespace DiskImpact
     catch (const std::domain_error &)
       {
         // Beyond the disk's log law: no 1-DOF collision; the contact time
-        // and load of seed 001's eq. 61.
+        // and load of Gerl & Zippelius' eq. 61.
         estimate.one_dof_contact_time      = std::nan("");
         estimate.one_dof_delta_max         = std::nan("");
         estimate.one_dof_epsilon           = std::nan("");
@@ -448,9 +465,9 @@ namespace DiskImpact
     catch (const std::domain_error &)
       {
         within_law = false;
-        // Beyond the pair's law: the wall's estimate (seed 001, eq. 61) for
-        // the equivalent body (docs/two-bodies.md) with the reduced mass,
-        // or Hertz's (D = 0) for spheres; no 1-DOF values.
+        // Beyond the pair's law: the wall's estimate (Gerl & Zippelius 1999,
+        // eq. 61) for the equivalent body (docs/two-bodies.md) with the reduced
+        // mass, or Hertz's (D = 0) for spheres; no 1-DOF values.
         const auto eq = Reference::equivalent_body(sphere, body, other);
         if (sphere)
           {
@@ -551,9 +568,9 @@ namespace DiskImpact
     const double mass     = material.density() * parameters.geometry.volume();
     const double tau      = material.relaxation_time();
     if (!parameters.geometry.is_axisymmetric())
-      // Schwager's alpha = A sqrt(pi E2 / m) with A = tau (seed 000).
+      // Schwager's alpha = A sqrt(pi E2 / m) with A = tau (Schwager 2007).
       return tau * std::sqrt(M_PI * E2 / mass);
-    // Seed 003's u = (v / g*)^{1/5} with A = tau, eq. 32.
+    // Ramírez et al.'s u = (v / g*)^{1/5} with A = tau, eq. 32.
     if (!(tau > 0.))
       return 0.;
     return Reference::sphere_scaled_velocity(
@@ -662,7 +679,8 @@ namespace DiskImpact
                     "vibration_fraction",
                     "partner_vibration_fraction",
                     "momentum_error",
-                    "one_dof_epsilon_unloading"});
+                    "one_dof_epsilon_unloading",
+                    "ramirez_u"});
     table.start_row();
     for (const double value : {s.velocity,
                                s.epsilon,
@@ -687,6 +705,7 @@ namespace DiskImpact
     table.add(s.partner_vibration_fraction);
     table.add(s.momentum_error);
     table.add(s.one_dof_epsilon_unloading);
+    table.add(s.ramirez_u);
     return table;
   }
 } // namespace DiskImpact

@@ -40,14 +40,17 @@ namespace DiskImpact
     double       time_step         = 0.;     ///< [R / c]
     double       wall_time_loop    = 0.;     ///< time stepping only [s]
     double       triangular_solve_time = 0.; ///< mean time of one solve [s]
-    unsigned int contact_dofs   = 0;  ///< DoFs the contact was condensed on
-    unsigned int massless_dofs  = 0;  ///< DoFs without inertia
-    double       schwager_alpha = 0.; ///< Impact::dissipation_parameter
-    double       one_dof_contact_time = 0.; ///< 1-DOF log law [R / c]
-    double       one_dof_delta_max    = 0.; ///< 1-DOF log law, / R
-    double       one_dof_epsilon      = 1.; ///< 1-DOF law with viscosity
-    double one_dof_epsilon_overlap    = 1.; ///< the same, ended at zero overlap
-    double one_dof_epsilon_unloading  = 1.; ///< Kelvin-Voigt unloading law
+    unsigned int contact_dofs  = 0; ///< DoFs the contact was condensed on
+    unsigned int massless_dofs = 0; ///< DoFs without inertia
+    /// Impact::dissipation_parameter(): Schwager's alpha of a disk, NaN
+    /// for a sphere; Ramírez et al.'s u of a sphere, NaN for a disk.
+    double schwager_alpha            = std::nan("");
+    double ramirez_u                 = std::nan("");
+    double one_dof_contact_time      = 0.; ///< 1-DOF log law [R / c]
+    double one_dof_delta_max         = 0.; ///< 1-DOF log law, / R
+    double one_dof_epsilon           = 1.; ///< 1-DOF law with viscosity
+    double one_dof_epsilon_overlap   = 1.; ///< the same, ended at zero overlap
+    double one_dof_epsilon_unloading = 1.; ///< Kelvin-Voigt unloading law
     /// The energy left in the body's vibration / E(0); with a partner
     /// also the partner's, and |m1 v1 + m2 v2| / (m* v_i) at the end (NaN
     /// for a wall), m* = m1 m2 / (m1 + m2).
@@ -77,8 +80,8 @@ namespace DiskImpact
    * (TimeIntegrator), one factorization of the effective matrix and the
    * contact condensed on its DoFs, solved by Newton's method
    * (CondensedSolver); runs until the contact force has
-   * returned to zero (seed 002) plus a margin. Writes impact.csv,
-   * summary.csv and impact.pvd.
+   * returned to zero (Schwager & Pöschel 2007) plus a margin. Writes
+   * impact.csv, summary.csv and impact.pvd.
    */
   class Impact
   {
@@ -120,7 +123,7 @@ namespace DiskImpact
     with_mesh_refined(unsigned int levels) const;
 
     /// The 1-DOF log-law collision at this velocity (beyond the log law's
-    /// range: seed 001's eq. 61 for the contact time and load).
+    /// range: Gerl & Zippelius' eq. 61 for the contact time and load).
     CollisionEstimate
     estimate_collision(const Parameters &parameters) const;
     /// estimate_collision() of two bodies (subsection Partner).
@@ -169,8 +172,8 @@ namespace DiskImpact
 
     /**
      * The body's dimensionless dissipation: for a disk Schwager's
-     * alpha = tau sqrt(pi E2 / m) (seed 000), for a sphere seed 003's
-     * u = (v / g*)^{1/5} (eq. 32), both with A = tau; 0 if elastic.
+     * alpha = tau sqrt(pi E2 / m) (Schwager 2007), for a sphere Ramírez et
+     * al.'s u = (v / g*)^{1/5} (eq. 32), both with A = tau; 0 if elastic.
      */
     double
     dissipation_parameter(const Parameters &parameters) const;

@@ -281,7 +281,7 @@ namespace DiskImpact
 
     // Each run's results as numbers, summed over the ranks (zero where a
     // rank did not run it).
-    constexpr unsigned int n_fields = 11;
+    constexpr unsigned int n_fields = 12;
     std::vector<double>    fields(n_fields * runs.size(), 0.);
     auto                   run_one = [&](const unsigned int i) {
       const auto    start = std::chrono::steady_clock::now();
@@ -327,7 +327,8 @@ namespace DiskImpact
                                                  static_cast<double>(s.steps),
                                                  seconds,
                                                  s.schwager_alpha,
-                                                 s.one_dof_epsilon}};
+                                                 s.one_dof_epsilon,
+                                                 s.ramirez_u}};
       std::copy(values.begin(), values.end(), &fields[n_fields * i]);
       if (log != nullptr)
         *log << describe({runs[i].factor,
@@ -363,6 +364,7 @@ namespace DiskImpact
         done[i].wall_time = f[8];
         s.schwager_alpha  = f[9];
         s.one_dof_epsilon = f[10];
+        s.ramirez_u       = f[11];
       }
     return done;
   }

@@ -72,7 +72,8 @@ namespace DiskImpact
                const std::vector<double> &displacement,
                const std::vector<double> &velocity,
                const std::string         &parameters_json,
-               const std::string         &units)
+               const std::string         &units,
+               const UnitSystem          &unit_system)
     {
       Hdf5Output file(filename);
       file.write_table("summary", Impact::summary_table(summary));
@@ -96,6 +97,7 @@ namespace DiskImpact
       file.write_vector("final_state", "displacement", displacement);
       file.write_vector("final_state", "velocity", velocity);
       file.set_attribute("/", "units", units);
+      file.set_si_unit_attributes(unit_system);
       file.set_attribute("/", "parameters", parameters_json);
       file.finish();
     }
@@ -125,8 +127,10 @@ namespace DiskImpact
       , constraint_map(*this->operators->constraint_map)
       , series(time_series_table())
   {
-    summary.velocity       = impact.velocity();
-    summary.schwager_alpha = impact.dissipation_parameter(parameters);
+    summary.velocity = impact.velocity();
+    (parameters.geometry.is_axisymmetric() ? summary.ramirez_u :
+                                             summary.schwager_alpha) =
+      impact.dissipation_parameter(parameters);
   }
 
   ImpactSummary
@@ -665,8 +669,8 @@ namespace DiskImpact
   bool
   ImpactSimulation::collision_over()
   {
-    // The collision ends when the step-mean force returns to zero (seed
-    // 002): the last two positive values, at mid-step, extrapolated to
+    // The collision ends when the step-mean force returns to zero (Schwager &
+    // Pöschel 2007): the last two positive values, at mid-step, extrapolated to
     // zero within the step in which the force vanished.
     const double mean_force = state.force_average;
     const double mid_time   = t - 0.5 * dt;
@@ -698,9 +702,12 @@ namespace DiskImpact
   {
     if (!with_outputs)
       return;
-    const auto   ghosted_u = op.create_ghosted(u);
-    const auto  &directory = parameters.run.output_directory;
-    const double time      = t * c / R;
+    const auto  ghosted_u = op.create_ghosted(u);
+    const auto &directory = parameters.run.output_directory;
+    // The record's times and fields in the units of the files (SI for an
+    // SI run).
+    const FieldScales scales = parameters.units.field_scales();
+    const double      time   = t * c / R * scales.time;
     if (impact.revolved_view_angle > 0.)
       {
         const auto [flat, revolved] =
@@ -713,7 +720,8 @@ namespace DiskImpact
                                             impact.revolved_view_angle,
                                             directory,
                                             "impact",
-                                            snapshots.size());
+                                            snapshots.size(),
+                                            scales);
         snapshots.emplace_back(time, flat);
         revolved_snapshots.emplace_back(time, revolved);
       }
@@ -725,7 +733,8 @@ namespace DiskImpact
                                                   ghosted_u,
                                                   directory,
                                                   "impact",
-                                                  snapshots.size()));
+                                                  snapshots.size(),
+                                                  scales));
   }
 
   void
@@ -868,7 +877,8 @@ namespace DiskImpact
                  final_u,
                  final_v,
                  parameters.run.parameters_json,
-                 Impact::units(parameters));
+                 Impact::units(parameters),
+                 parameters.units);
     });
   }
 } // namespace DiskImpact

@@ -28,9 +28,10 @@ namespace DiskImpact
    * One impact (task 'impact', docs/impact.md): the 1-DOF estimate of the
    * collision, the mesh graded toward the contact, the operators, time
    * stepping with the contact condensed on its DoFs (CondensedSolver), the
-   * end of the collision (the step-mean contact force back at zero, seed
-   * 002) plus a margin, and the outputs. Built and run once; its mesh and
-   * operators may be shared with runs that differ only in the time step.
+   * end of the collision (the step-mean contact force back at zero, Schwager
+   * & Pöschel 2007) plus a margin, and the outputs. Built and run once; its
+   * mesh and operators may be shared with runs that differ only in the time
+   * step.
    */
   class ImpactSimulation
   {
@@ -48,7 +49,7 @@ namespace DiskImpact
 
   private:
     /// Contact time (for the step) and largest load (for the mesh) from the
-    /// 1-DOF log law; beyond its range, seed 001's eq. 61.
+    /// 1-DOF log law; beyond its range, Gerl & Zippelius' eq. 61.
     void
     estimate_collision();
     /// The contact zone and the solver's other pieces on the operators,

@@ -44,9 +44,9 @@ namespace DiskImpact
         << s.one_dof_delta_max << ")\n"
         << "  force_max = " << s.force_max << (sphere ? " E* R^2" : " E2 R")
         << "\n"
-        << (sphere ? "  seed 003's u = (v / g*)^(1/5) = " :
+        << (sphere ? "  Ramírez et al.'s u = (v / g*)^(1/5) = " :
                      "  Schwager's alpha = tau sqrt(pi E2 / m) = ")
-        << s.schwager_alpha << "\n"
+        << (sphere ? s.ramirez_u : s.schwager_alpha) << "\n"
         << "  energy error = " << s.energy_error
         << ", impulse error = " << s.impulse_error << "\n"
         << "  time stepping: " << s.wall_time_loop << " s, "

@@ -3,6 +3,7 @@
 #include "base/input_error.h"
 #include "base/parameter_lists.h"
 #include "base/parameters.h"
+#include "base/renamed_entries.h"
 #include "base/run_error.h"
 #include "output/csv_table.h"
 
@@ -110,7 +111,7 @@ namespace DiskImpact
       std::map<std::vector<double>, std::vector<std::pair<double, double>>>;
 
     /**
-     * The seed's extrapolations: for each (nu2, v, alpha) epsilon(N) to
+     * Gerl & Zippelius' extrapolations: for each (nu2, v, alpha) epsilon(N) to
      * N -> infinity, linear in 1 / sqrt(N); then those limits to
      * alpha -> infinity, linear in 1 / alpha, with the error bar of that fit
      * plus the largest of the N fits'. Writes modal_extrapolation.csv and
@@ -123,7 +124,7 @@ namespace DiskImpact
     {
       CsvTable table({"poisson_ratio_2d",
                       "velocity",
-                      "alpha",
+                      "potential_stiffness",
                       "limit",
                       "epsilon",
                       "slope",
@@ -148,9 +149,10 @@ namespace DiskImpact
             << std::scientific << std::setprecision(1) << std::setw(10)
             << fit.residual << std::setw(10) << fit.error << '\n';
       };
-      out << "Fits epsilon = limit + slope x: x = 1/sqrt(N) for each alpha "
-             "(N -> infinity), then x = 1/alpha (hard contact, alpha = inf):\n"
-             "    nu2     v/c   alpha      limit    epsilon      slope  "
+      out << "Fits epsilon = limit + slope x: x = 1/sqrt(N) for each wall "
+             "stiffness s (N -> infinity), then x = 1/s (hard contact, s = "
+             "inf):\n"
+             "    nu2     v/c       s      limit    epsilon      slope  "
              "residual     error\n";
       // (nu2, v) -> (1 / alpha, epsilon_N->inf, its error)
       std::map<std::pair<double, double>, std::vector<std::array<double, 3>>>
@@ -204,13 +206,14 @@ namespace DiskImpact
                       "0.1",
                       Patterns::List(Patterns::Double(0.), 1),
                       "Impact speeds v / c [-].");
-    prm.declare_entry("Potential stiffnesses",
-                      "100, 200, 500",
-                      Patterns::List(Patterns::Double(0.), 1),
-                      "Stiffnesses alpha of the wall potential (E2 R / "
-                      "alpha) exp(alpha x / R) per unit edge length (seed "
-                      "001, eq. 41) [-]; with two or more, epsilon is "
-                      "extrapolated to hard contact (linear in 1 / alpha).");
+    prm.declare_entry(
+      "Potential stiffnesses",
+      "100, 200, 500",
+      Patterns::List(Patterns::Double(0.), 1),
+      "Stiffnesses s of the wall potential (E2 R / s) exp(s x / R) per "
+      "unit edge length (Gerl & Zippelius 1999, eq. 41, who call it "
+      "alpha) [-]; with two or more, epsilon is extrapolated to hard "
+      "contact (linear in 1 / s).");
     prm.declare_entry("Mode counts",
                       "100, 200, 400, 800, 1600",
                       Patterns::List(Patterns::Integer(1), 1),
@@ -218,11 +221,12 @@ namespace DiskImpact
                       "about the impact axis [-]; with two or more, epsilon "
                       "is extrapolated to N -> infinity (linear in "
                       "1 / sqrt(N)).");
-    prm.declare_entry("Poisson ratios",
+    prm.declare_entry("In-plane Poisson ratios",
                       "",
                       Patterns::List(Patterns::Double(), 0),
-                      "In-plane Poisson ratios nu2 [-]; empty: the in-plane "
-                      "ratio of subsection Material.");
+                      "In-plane Poisson ratios nu2 [-] (plane strain with "
+                      "the 3D nu has nu2 = nu / (1 - nu)); empty: the "
+                      "in-plane ratio of subsection Material.");
     prm.declare_entry("Angular points",
                       "256",
                       Patterns::Integer(2),
@@ -231,21 +235,30 @@ namespace DiskImpact
     prm.declare_entry("Steps per period",
                       "40",
                       Patterns::Double(2.),
-                      "Time steps per 2 pi / max(omega_N, alpha v / R) [-].");
-    prm.declare_entry("Integrator",
-                      "runge kutta",
-                      Patterns::Selection("runge kutta|splitting"),
-                      "'runge kutta': RK4 on the interaction-picture "
-                      "amplitudes (seed 001, eq. 44 corrected); 'splitting': "
-                      "symplectic Strang splitting, each oscillator rotated "
-                      "exactly (docs/modal-expansion.md).");
-    prm.declare_entry("Mode energies",
+                      "Time steps per 2 pi / max(omega_N, s v / R) [-].");
+    prm.declare_entry(
+      "Integrator",
+      "runge kutta",
+      Patterns::Selection("runge kutta|splitting"),
+      "'runge kutta': RK4 on the interaction-picture "
+      "amplitudes (Gerl & Zippelius 1999, eq. 44 corrected); 'splitting': "
+      "symplectic Strang splitting, each oscillator rotated "
+      "exactly (docs/theory/modal-expansion-model.md).");
+    prm.declare_entry("Number of listed modes",
                       "10",
                       Patterns::Integer(0, 100),
                       "Modes listed in modal_expansion_modes.csv per run "
                       "with the largest N, by average energy during the "
                       "collision (by the energy after it where the run had "
                       "no contact window) [-].");
+    declare_renamed_entry(prm,
+                          "Modal expansion",
+                          "In-plane Poisson ratios",
+                          "Poisson ratios");
+    declare_renamed_entry(prm,
+                          "Modal expansion",
+                          "Number of listed modes",
+                          "Mode energies");
     prm.leave_subsection();
   }
 
@@ -255,14 +268,14 @@ namespace DiskImpact
     prm.enter_subsection("Modal expansion");
     velocities       = get_double_list(prm, "Velocities");
     alphas           = get_double_list(prm, "Potential stiffnesses");
-    poisson_ratios   = get_double_list(prm, "Poisson ratios");
+    poisson_ratios   = get_double_list(prm, "In-plane Poisson ratios");
     mode_counts      = get_count_list(prm, "Mode counts");
     angular_points   = prm.get_integer("Angular points");
     steps_per_period = prm.get_double("Steps per period");
     integrator       = prm.get("Integrator") == "splitting" ?
                          Reference::ModalIntegrator::strang_splitting :
                          Reference::ModalIntegrator::runge_kutta_interaction_picture;
-    mode_rows        = prm.get_integer("Mode energies");
+    mode_rows        = prm.get_integer("Number of listed modes");
     prm.leave_subsection();
     require_each(
       velocities,
@@ -276,7 +289,7 @@ namespace DiskImpact
     require_each(
       poisson_ratios,
       [](const double nu2) { return nu2 > -1. && nu2 < 1.; },
-      "Modal expansion: every entry of 'Poisson ratios' must satisfy "
+      "Modal expansion: every entry of 'In-plane Poisson ratios' must satisfy "
       "-1 < nu2 < 1");
   }
 
@@ -305,7 +318,7 @@ namespace DiskImpact
     const unsigned int  per_run = n_run_fields + n_mode_fields * mode_rows;
     std::vector<double> fields(per_run * runs.size(), 0.);
     std::map<double, std::vector<Reference::FreeDiskModeShape>> bases;
-    pcout << "    nu2     v/c   alpha      N      epsilon   energy err."
+    pcout << "    nu2     v/c       s      N      epsilon   energy err."
              "   time\n";
     // A run that fails on one rank fails the task on all.
     collectively(communicator, [&]() {
@@ -344,7 +357,7 @@ namespace DiskImpact
               "time limit (nu2 = " +
               Utilities::to_string(run.nu2) +
               ", v = " + Utilities::to_string(run.v) +
-              ", alpha = " + Utilities::to_string(run.alpha) +
+              ", s = " + Utilities::to_string(run.alpha) +
               ", N = " + Utilities::to_string(run.n_modes) +
               "); more 'Steps per period' may help");
           const auto values = pack(result, seconds, mode_rows);
@@ -364,7 +377,7 @@ namespace DiskImpact
       const std::string directory = parameters.run.output_directory + "/";
       CsvTable          table({"poisson_ratio_2d",
                                "velocity",
-                               "alpha",
+                               "potential_stiffness",
                                "n_modes",
                                "epsilon",
                                "contact_time",
@@ -375,7 +388,7 @@ namespace DiskImpact
                                "wall_time"});
       CsvTable          modes({"poisson_ratio_2d",
                                "velocity",
-                               "alpha",
+                               "potential_stiffness",
                                "n_modes",
                                "rank",
                                "n",

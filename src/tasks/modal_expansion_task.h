@@ -17,13 +17,13 @@ namespace DiskImpact
   /**
    * Task 'modal expansion impact' (subsection "Modal expansion"): epsilon
    * of the disk's collision with the smooth wall potential in the modal
-   * expansion of seed 001 (Reference::ModalExpansionImpact), for every
-   * in-plane Poisson ratio, velocity, wall stiffness alpha and number of
-   * modes N of the lists, then extrapolated as the seed does: for each
+   * expansion of Gerl & Zippelius 1999 (Reference::ModalExpansionImpact), for
+   * every in-plane Poisson ratio, velocity, wall stiffness alpha and number of
+   * modes N of the lists, then extrapolated as Gerl & Zippelius do: for each
    * alpha to N -> infinity by a fit linear in 1/sqrt(N), then to hard
    * contact by a fit linear in 1/alpha. Writes modal_expansion.csv (every
    * run), modal_expansion_modes.csv (the modes of largest average energy of
-   * the runs with the largest N, as seed 001's Table 1) and
+   * the runs with the largest N, as Gerl & Zippelius' Table 1) and
    * modal_extrapolation.csv (the fits, with their residuals and error
    * bars). The runs are shared out among the MPI ranks.
    */

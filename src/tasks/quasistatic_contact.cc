@@ -448,7 +448,7 @@ namespace DiskImpact
         law.add(nu2);
 
         // Pressure in units of P / R (disk) or P / R^2 (sphere) against
-        // Hertz (seed 001, eq. 46).
+        // Hertz (Gerl & Zippelius 1999, eq. 46).
         const double R = parameters.geometry.radius();
         for (const auto &[y, pressure] : problem.pressure_profile())
           {
@@ -485,7 +485,8 @@ namespace DiskImpact
         pcout << line.str() << std::flush;
       }
     else
-      pcout << "Seed 001, eq. 57: C = -1 - nu2 = " << -1. - nu2 << std::endl;
+      pcout << "Gerl & Zippelius 1999, eq. 57: C = -1 - nu2 = " << -1. - nu2
+            << std::endl;
     on_root(communicator, [&]() {
       law.write(directory + "/contact_law.csv");
       profile.write(directory + "/pressure_profile.csv");

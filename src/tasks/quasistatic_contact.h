@@ -31,12 +31,13 @@ namespace DiskImpact
   /**
    * Task 'quasistatic contact': a half disk (symmetric about the impact
    * axis) or a sphere pressed on the wall by a uniform body force of total
-   * P (seed 001, section 5: the quasistatic picture of the body being
-   * decelerated), for a list of loads, against Reference::WallContactTheory.
-   * Per load: a mesh graded toward the contact point so the elements across the
-   * whole Hertz half-width are small, then Newton's method with a backtracking
-   * line search on the penalty contact problem. Writes contact_law.csv,
-   * pressure_profile.csv and the deformed states (contact.pvd).
+   * P (Gerl & Zippelius 1999, section 5: the quasistatic picture of the body
+   * being decelerated), for a list of loads, against
+   * Reference::WallContactTheory. Per load: a mesh graded toward the contact
+   * point so the elements across the whole Hertz half-width are small, then
+   * Newton's method with a backtracking line search on the penalty contact
+   * problem. Writes contact_law.csv, pressure_profile.csv and the deformed
+   * states (contact.pvd).
    */
   class QuasistaticContact
   {

@@ -3,6 +3,7 @@
 #include "base/input_error.h"
 #include "base/parameter_lists.h"
 #include "base/parameters.h"
+#include "base/renamed_entries.h"
 #include "base/run_error.h"
 #include "output/csv_table.h"
 #include "reference/collision_ode.h"
@@ -27,7 +28,7 @@ namespace DiskImpact
   namespace
   {
     /// The 1-DOF disk collision in units E2 = rho = R = 1 (m = pi, c = 1,
-    /// A = alpha); NaN where the log law cannot stop the disk (seed 000,
+    /// A = alpha); NaN where the log law cannot stop the disk (Schwager 2007,
     /// eq. 50: the scaled velocity beyond 1 / (sqrt(2) e)).
     Reference::Collision
     disk_collision(const double                  v,
@@ -77,7 +78,7 @@ namespace DiskImpact
     }
 
     /// @p formula(v_s) where the scaled velocity v_s is below the largest
-    /// the log law allows (seed 000, eq. 50); NaN beyond.
+    /// the log law allows (Schwager 2007, eq. 50); NaN beyond.
     template <typename Formula>
     double
     within_law(const double scaled_velocity, const Formula &formula)
@@ -92,39 +93,47 @@ namespace DiskImpact
   ReferenceModels::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Reference models");
-    prm.declare_entry("Model",
-                      "disk",
-                      Patterns::Selection("disk|dashpot|spheres|rayleigh"),
-                      "Task 'reference models': 'disk' (log law with "
-                      "Kelvin-Voigt dissipation, seed 000), 'dashpot' (linear "
-                      "spring and dashpot, seed 002), 'spheres' "
-                      "(viscoelastic Hertz spheres, seed 003) or 'rayleigh' "
-                      "(vibration left in the free-disk modes by the "
-                      "quasistatic collision of an elastic disk, seed 001, "
-                      "eqs. 62-68).");
+    prm.declare_entry(
+      "Model",
+      "disk",
+      Patterns::Selection("disk|dashpot|spheres|rayleigh"),
+      "Task 'reference models': 'disk' (log law with "
+      "Kelvin-Voigt dissipation, Schwager 2007), 'dashpot' (linear "
+      "spring and dashpot, Schwager & Pöschel 2007), 'spheres' "
+      "(viscoelastic Hertz spheres, Ramírez et al. 1999) or 'rayleigh' "
+      "(vibration left in the free-disk modes by the "
+      "quasistatic collision of an elastic disk, Gerl & Zippelius 1999, "
+      "eqs. 62-68).");
     prm.declare_entry("Velocities",
                       "0.001, 0.002, 0.005, 0.01, 0.02, 0.05, 0.1",
                       Patterns::List(Patterns::Double(0.), 1),
                       "Models 'disk' and 'rayleigh': impact speeds v / c "
                       "[-].");
-    prm.declare_entry("Alphas",
+    prm.declare_entry("Relaxation times",
                       "0.02, 0.05, 0.1",
                       Patterns::List(Patterns::Double(0.), 1),
-                      "Model 'disk': Schwager's damping parameter alpha = A "
-                      "sqrt(pi E2 / m) = tau c / R [-].");
+                      "Model 'disk': Kelvin-Voigt relaxation times tau in "
+                      "units of R/c [-], which equal Schwager's damping "
+                      "parameter alpha = A sqrt(pi E2 / m) = tau c / R (A = "
+                      "tau).");
     prm.declare_entry("Damping ratios",
                       "0.05, 0.2, 0.5, 0.7, 0.8, 0.9, 1, 1.5, 3, 10",
                       Patterns::List(Patterns::Double(0.), 1),
                       "Model 'dashpot': beta / omega0 [-].");
-    prm.declare_entry("Velocity ratios",
-                      "1e-8, 1e-6, 1e-5, 1e-4, 1e-3, 1e-2, 0.1, 1, 10, 100",
-                      Patterns::List(Patterns::Double(0.), 1),
-                      "Model 'spheres': g / g* (seed 003, eq. 30) [-].");
+    prm.declare_entry(
+      "Velocity ratios",
+      "1e-8, 1e-6, 1e-5, 1e-4, 1e-3, 1e-2, 0.1, 1, 10, 100",
+      Patterns::List(Patterns::Double(0.), 1),
+      "Model 'spheres': g / g* (Ramírez et al. 1999, eq. 30) [-].");
     prm.declare_entry("Mode counts",
                       "10, 25, 50, 100, 200",
                       Patterns::List(Patterns::Integer(1), 1),
                       "Model 'rayleigh': numbers N of the lowest free-disk "
                       "modes symmetric about the impact axis [-].");
+    declare_renamed_entry(prm,
+                          "Reference models",
+                          "Relaxation times",
+                          "Alphas");
     prm.leave_subsection();
   }
 
@@ -139,7 +148,7 @@ namespace DiskImpact
       {"rayleigh", ReferenceModel::rayleigh}};
     model           = models.at(prm.get("Model"));
     velocities      = get_double_list(prm, "Velocities");
-    alphas          = get_double_list(prm, "Alphas");
+    alphas          = get_double_list(prm, "Relaxation times");
     damping_ratios  = get_double_list(prm, "Damping ratios");
     velocity_ratios = get_double_list(prm, "Velocity ratios");
     mode_counts     = get_count_list(prm, "Mode counts");
@@ -165,7 +174,7 @@ namespace DiskImpact
                 Reference::schwager_maximum_scaled_velocity(),
               "Reference models: an entry of 'Velocities', v/c = " +
                 approximately(v, 6) +
-                ", is too fast for the log law (seed 000, eq. 50)");
+                ", is too fast for the log law (Schwager 2007, eq. 50)");
   }
 
   void
@@ -241,7 +250,7 @@ namespace DiskImpact
     const Reference::SchwagerDiskRestitution schwager;
     std::cout << "Disk: log law with C = " << C << " (nu2 = " << nu2
               << "): epsilon of the 1-DOF ODE (force and overlap end) and "
-                 "eqs. 56, 80 of seed 000\n"
+                 "eqs. 56, 80 of Schwager 2007\n"
               << "    v/c   alpha   force end   overlap end       eq. 56"
                  "       eq. 80\n";
     CsvTable table({"velocity",
@@ -346,7 +355,7 @@ namespace DiskImpact
     const auto &printed = Reference::printed_sphere_coefficients;
     for (const double ratio : velocity_ratios)
       {
-        // The seed's expansion variable (g / g*)^(1/5) (eq. 32).
+        // Ramírez et al.'s expansion variable (g / g*)^(1/5) (eq. 32).
         const double              u = std::pow(ratio, 0.2);
         const std::vector<double> row{
           ratio,
@@ -382,7 +391,8 @@ namespace DiskImpact
       *std::max_element(mode_counts.begin(), mode_counts.end());
     std::cout << "Rayleigh: vibration left by the collision, log law with C = "
               << C << " (nu2 = " << nu2 << "), up to " << largest << " modes\n"
-              << "  first order: the 1-DOF force on the modes (seed 001, eqs. "
+              << "  first order: the 1-DOF force on the modes (Gerl & "
+                 "Zippelius 1999, eqs. "
                  "62-68); feedback: the\n  contact force also feels the "
                  "modes' dynamic displacement ('-': too many modes for\n  the "
                  "contact width)\n"

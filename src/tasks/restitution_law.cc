@@ -53,7 +53,8 @@ namespace DiskImpact
     }
 
     /// 1 - eps(v) = sum_{k=1}^{K} a_k (v / v_ref)^{k/5}: Hertz's scaling of
-    /// the viscoelastic sphere's series (seed 003), smooth for any body.
+    /// the viscoelastic sphere's series (Ramírez et al. 1999), smooth for any
+    /// body.
     struct SmoothFit
     {
       double              v_ref = 1.;
@@ -107,7 +108,7 @@ namespace DiskImpact
       return {v_ref, std::vector<double>(a.begin(), a.end())};
     }
 
-    /// The seeds' 1-DOF epsilon at speed @p v with dissipative constant A
+    /// The papers' 1-DOF epsilon at speed @p v with dissipative constant A
     /// (the Kelvin-Voigt relaxation time, docs/sphere.md: A = tau).
     double
     theory_epsilon(const Parameters &parameters, const double v, const double A)
@@ -233,7 +234,8 @@ namespace DiskImpact
         "pair_coeff * *\n";
       files["lammps.txt"] =
         head.str() +
-        "# LAMMPS pair granular, Hertz with viscoelastic damping: seed 003's "
+        "# LAMMPS pair granular, Hertz with viscoelastic damping: Ramírez et "
+        "al.'s "
         "law with the fitted A = " +
         number(d.A) +
         " s,\n# eta_n0 = 2 A E_eff / m_eff, the velocity dependence "
@@ -440,8 +442,8 @@ namespace DiskImpact
            << number(v_ref) << ", \"a\": " << json_list(smooth.a)
            << ", \"max_residual\": " << number(smooth_residual) << "},\n"
            << "  \"theory_fit\": {\"model\": \""
-           << (sphere ? "seed 003 (Brilliantov) with A" :
-                        "seed 000 (Schwager) with A")
+           << (sphere ? "Ramírez et al. 1999 (Brilliantov) with A" :
+                        "Schwager 2007 (Schwager) with A")
            << "\", \"A\": " << number(theory.A) << ", \"relaxation_time\": "
            << number(parameters.material.relaxation_time())
            << ", \"time_unit\": \"R sqrt(rho/E)\""
@@ -456,8 +458,12 @@ namespace DiskImpact
            << "\n}\n";
       write_atomically(directory + "/restitution_law.json", json.str());
 
-      std::cout << "Restitution law: smooth fit 1 - eps = sum a_k (v/"
-                << number(v_ref) << ")^{k/5}, a = " << json_list(smooth.a)
+      // The reference speed in the units of the parameter file.
+      const std::string reference_speed =
+        units.is_si() ? number(v_ref * units.speed()) + " m/s" :
+                        number(v_ref) + " c";
+      std::cout << "Restitution law: smooth fit 1 - eps = sum a_k (v / "
+                << reference_speed << ")^{k/5}, a = " << json_list(smooth.a)
                 << ", largest residual " << number(smooth_residual)
                 << "\n  1-DOF theory fit: A = "
                 << number(theory.A * (units.is_si() ? units.input_time() : 1.))
@@ -466,10 +472,7 @@ namespace DiskImpact
                 << number(parameters.material.relaxation_time() *
                           (units.is_si() ? units.input_time() : 1.))
                 << ", largest residual " << number(theory_residual)
-                << "\n  at v_ref = " << number(v_ref) << " c"
-                << (units.is_si() ?
-                      " = " + number(v_ref * units.speed()) + " m/s" :
-                      "")
+                << "\n  at v_ref = " << reference_speed
                 << ": epsilon = " << number(epsilon_ref) << '\n';
       if (!files.empty())
         std::cout << "  DEM inputs in " << directory

@@ -19,9 +19,9 @@ namespace DiskImpact
    *   time, largest compression and peak force, dimensionless and (with
    *   'Units = SI') in SI;
    * - fits with their residuals: a smooth 1 - eps = sum_k a_k (v/v_ref)^{k/5}
-   *   for any particle, and the dissipative constant A of the seeds'
-   *   1-DOF theory (disk: Schwager's, seed 000; sphere: seed 003) fitted to
-   *   the FE epsilon(v);
+   *   for any particle, and the dissipative constant A of the papers'
+   *   1-DOF theory (disk: Schwager's, Schwager 2007; sphere: Ramírez et al.
+   * 1999) fitted to the FE epsilon(v);
    * - for a sphere in SI, inputs for DEM codes at 'Reference speed' in
    *   dem/ (LIGGGHTS, LAMMPS, Yade, MercuryDPM, Lethe);
    * - restitution_law.json: all of it with the provenance (version,

@@ -43,7 +43,8 @@ namespace DiskImpact
                                                 "relaxation_time",
                                                 "alpha",
                                                 "one_dof_epsilon",
-                                                "partner_radius"};
+                                                "partner_radius",
+                                                "ramirez_u"};
     /// Positions of the columns that identify a point.
     constexpr unsigned int velocity_column = 0, poisson_column = 1,
                            relaxation_column = 13, partner_column = 16;
@@ -119,7 +120,8 @@ namespace DiskImpact
     }
 
     /// Run one point on this rank alone: its row of restitution.csv, epsilon
-    /// and its error from the convergence study if 'Error estimate' is set.
+    /// and its error from the convergence study if 'Convergence study per
+    /// point' is set.
     Row
     run_point(const Point &point)
     {
@@ -153,24 +155,45 @@ namespace DiskImpact
              {11, static_cast<double>(s.n_dofs)},
              {12, wall_time},
              {14, s.schwager_alpha},
-             {15, s.one_dof_epsilon}})
+             {15, s.one_dof_epsilon},
+             {17, s.ramirez_u}})
         row[column] = value;
       return row;
     }
 
-    /// A point's row as a line of the terminal table.
+    /// The header of the terminal table: speeds and contact times in the
+    /// units of the parameter file (m/s and s with 'Units = SI').
     std::string
-    describe(const Row &row)
+    table_header(const UnitSystem &units)
+    {
+      return units.is_si() ?
+               "   v [m/s]   v/c     nu    nu2       epsilon     error   "
+               "contact time [s]  alpha/u_R  energy err.   time\n" :
+               "   v/c      nu    nu2       epsilon     error      "
+               "contact time  alpha/u_R  energy err.   time\n";
+    }
+
+    /// A point's row as a line of the terminal table (table_header()).
+    std::string
+    describe(const Row &row, const UnitSystem &units)
     {
       std::ostringstream line;
+      // Schwager's alpha for a disk, Ramírez et al.'s u for a sphere.
+      const double dissipation = std::isnan(row[14]) ? row[17] : row[14];
+      if (units.is_si())
+        line << std::setprecision(4) << std::setw(10) << row[0] * units.speed();
       line << std::fixed << std::setprecision(4) << std::setw(7) << row[0]
            << std::setw(8) << row[1] << std::setw(7) << row[8]
            << std::setprecision(7) << std::setw(12) << row[2] << std::scientific
-           << std::setprecision(1) << std::setw(10) << row[3] << std::fixed
-           << std::setprecision(4) << std::setw(12) << row[4] << std::setw(7)
-           << row[14] << std::scientific << std::setprecision(1)
-           << std::setw(11) << row[7] << std::fixed << std::setw(8) << row[12]
-           << " s";
+           << std::setprecision(1) << std::setw(10) << row[3];
+      if (units.is_si())
+        line << std::setprecision(4) << std::setw(17) << row[4] * units.time()
+             << std::fixed;
+      else
+        line << std::fixed << std::setprecision(4) << std::setw(12) << row[4];
+      line << std::fixed << std::setprecision(4) << std::setw(11) << dissipation
+           << std::scientific << std::setprecision(1) << std::setw(11) << row[7]
+           << std::fixed << std::setw(8) << row[12] << " s";
       if (!std::isnan(row[partner_column]))
         line << std::setprecision(4) << "  R2 = " << row[partner_column];
       return line.str();
@@ -187,13 +210,15 @@ namespace DiskImpact
       SweepTable(const std::string &directory,
                  std::vector<Point> points,
                  const std::string &parameters_json,
-                 const std::string &units)
+                 const std::string &units,
+                 const UnitSystem  &unit_system)
           : csv_file(directory + "/restitution.csv")
           , h5_file(directory + "/restitution.h5")
           , lock_file(directory + "/.restitution.lock")
           , points(std::move(points))
           , parameters_json(parameters_json)
           , units(units)
+          , unit_system(unit_system)
       {
       }
 
@@ -281,6 +306,7 @@ namespace DiskImpact
                            "; relaxation_time in the parameter file's time "
                            "unit, wall_time in s; the rest dimensionless");
         h5.set_attribute("/", "parameters", parameters_json);
+        h5.set_si_unit_attributes(unit_system);
         h5.finish();
       }
 
@@ -315,6 +341,8 @@ namespace DiskImpact
       const std::string  parameters_json;
       /// The HDF5 root attribute 'units'.
       const std::string units;
+      /// The run's units (SI scales as root attributes).
+      const UnitSystem unit_system;
     };
 
     /// The index of the next pending point to run, shared by all ranks: an
@@ -468,7 +496,8 @@ namespace DiskImpact
     SweepTable         table(parameters.run.output_directory,
                      sweep_points(parameters),
                      parameters.run.parameters_json,
-                     Impact::units(parameters));
+                     Impact::units(parameters),
+                     parameters.units);
     // Every rank reads the kept rows: all must agree on the pending points.
     collectively(communicator, [&]() {
       if (resume)
@@ -495,9 +524,8 @@ namespace DiskImpact
                 << (n_kept > 0 ? ", " + std::to_string(n_kept) +
                                    " kept from the earlier run" :
                                  "")
-                << "\n   v/c      nu    nu2       epsilon     error      "
-                   "contact time  alpha  energy err.   time\n"
-                << std::flush;
+                << "\n"
+                << table_header(parameters.units) << std::flush;
 
     // Each rank takes the next pending point when it is free (a counter on
     // rank 0, MPI one-sided) and records its row itself.
@@ -541,7 +569,8 @@ namespace DiskImpact
                                  std::chrono::steady_clock::now() - start)
                                      .count();
             std::ostringstream line;
-            line << describe(row) << note << "  [" << n_done << "/" << n_total;
+            line << describe(row, parameters.units) << note << "  [" << n_done
+                 << "/" << n_total;
             if (n_done > n_kept && n_done < n_total)
           line << ", about "
                << std::lround(elapsed / (n_done - n_kept) * (n_total - n_done))

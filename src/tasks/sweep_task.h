@@ -28,9 +28,9 @@ namespace DiskImpact
 
   /**
    * Task 'sweep': one impact per point (velocity, Poisson ratio, relaxation
-   * time of subsection Impact), with 'Error estimate' each a convergence
-   * study (ImpactConvergenceStudy: epsilon extrapolated, with its error
-   * bar). The points are shared out among the MPI ranks, each taking the
+   * time of subsection Impact), with 'Convergence study per point' each a
+   * convergence study (ImpactConvergenceStudy: epsilon extrapolated, with its
+   * error bar). The points are shared out among the MPI ranks, each taking the
    * next point when it is free and running it alone.
    *
    * restitution.csv has one row per point from the start, its 'status'

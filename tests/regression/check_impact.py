@@ -4,7 +4,7 @@
 usage: check_impact.py summary.csv [--epsilon E TOL] [--energy TOL]
        [--impulse TOL] [--one-dof TOL] [--factorizations N]
        [--solves-per-step MAX] [--one-dof-epsilon TOL]
-       [--one-dof-unloading TOL [--seed-law-off MIN]]
+       [--one-dof-unloading TOL [--ramirez-law-off MIN]]
 """
 import argparse
 import csv
@@ -22,7 +22,7 @@ p.add_argument("--one-dof-epsilon", type=float,
 p.add_argument("--one-dof-unloading", type=float,
                help="bound on |epsilon - one_dof_epsilon_unloading| "
                     "(viscoelastic, the tension-free unloading law)")
-p.add_argument("--seed-law-off", type=float,
+p.add_argument("--ramirez-law-off", type=float,
                help="lower bound on |epsilon - one_dof_epsilon|: the case "
                     "tells the two laws apart")
 p.add_argument("--factorizations", type=int)
@@ -54,10 +54,10 @@ if a.one_dof_unloading is not None:
     diff = float(s["epsilon"]) - float(s["one_dof_epsilon_unloading"])
     checks.append(("epsilon - 1-DOF unloading law", diff,
                    abs(diff) <= a.one_dof_unloading))
-if a.seed_law_off is not None:
+if a.ramirez_law_off is not None:
     diff = float(s["epsilon"]) - float(s["one_dof_epsilon"])
-    checks.append(("epsilon - 1-DOF seed law (must exceed)", diff,
-                   abs(diff) >= a.seed_law_off))
+    checks.append(("epsilon - 1-DOF law of Ramírez et al. (must exceed)", diff,
+                   abs(diff) >= a.ramirez_law_off))
 if a.factorizations is not None:
     checks.append(("factorizations", int(s["factorizations"]),
                    int(s["factorizations"]) == a.factorizations))

@@ -13,8 +13,9 @@ resume     A sweep on 2 ranks is interrupted with SIGINT after two points,
            whole, the last run reports the rows it kept, and every epsilon
            equals that of an uninterrupted sweep.
 full-disk  Result files whose temporary file is /dev/full (every write fails
-           with ENOSPC, as on a full disk): one line naming the file and the
-           cause, exit code 1, no file under the result name, on 1 and 2
+           with ENOSPC, as on a full disk), the ParaView pieces and records
+           among them: one line naming the file and the cause, exit code 1,
+           no file under the result name and no .vtu/.pvtu left, on 1 and 2
            ranks.
 lock       A second run into the directory of a running sweep (held with
            SIGSTOP meanwhile) refuses with one line and touches nothing;
@@ -46,7 +47,7 @@ subsection Contact
 end
 subsection Impact
   set Velocities     = 0.02, 0.03, 0.05, 0.07, 0.1, 0.15, 0.2, 0.25
-  set Error estimate = false
+  set Convergence study per point = false
 end
 subsection Time stepping
   # Points of about a second: mpirun takes up to a second to end its
@@ -218,7 +219,7 @@ end
 subsection Impact
   set Velocity        = 0.05
   set Output interval = 10
-  set Mode energies   = 4
+  set Number of projected modes = 4
 end
 subsection Time stepping
   set Time step fraction = 0.02
@@ -231,6 +232,13 @@ def scenario_full_disk(args, root):
              for name in ("used_parameters.prm", "summary.csv", "impact.csv",
                           "impact.h5", "impact.pvd", "mode_energies.csv")
              for ranks in (1, 2)]
+    # The ParaView files: a rank's piece of the first or a later state, and
+    # the record that lists the pieces.
+    cases += [("impact", IMPACT_PRM, name, ranks)
+              for name, ranks in (("impact_0000.0.vtu", 1),
+                                  ("impact_0001.0.vtu", 1),
+                                  ("impact_0000.1.vtu", 2),
+                                  ("impact_0000.pvtu", 2))]
     cases += [("sweep", SWEEP_PRM.replace(
         "0.02, 0.03, 0.05, 0.07, 0.1, 0.15, 0.2, 0.25", "0.05, 0.1"), name, 2)
         for name in ("restitution.csv", "restitution.h5")]
@@ -250,6 +258,10 @@ def scenario_full_disk(args, root):
                  f"{process.returncode}, stderr {err!r}")
         if os.path.exists(os.path.join(work, "output", name)):
             fail(f"{task}, {name}: a file is left under the result name")
+        left = [f for f in os.listdir(os.path.join(work, "output"))
+                if f.endswith(".vtu") or f.endswith(".pvtu")]
+        if left:
+            fail(f"{task}, {name}: ParaView files of the failed run are left: {left}")
         print(f"{task}, {name}, {ranks} rank(s): '{lines[0]}', exit code "
               f"{process.returncode}, no {name}")
 

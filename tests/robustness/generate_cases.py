@@ -91,7 +91,7 @@ IMPACT_SECTIONS = [
     ("Contact", [("Penalty factor", "100")]),
     ("Impact", [("Velocity", "0.05"), ("Elements across contact", "6"),
                 ("Grading", "0.6"), ("Output interval", "0"),
-                ("Mode energies", "0")]),
+                ("Number of projected modes", "0")]),
     ("Time stepping", [("Scheme", "energy conserving"),
                        ("Time step fraction", "0.05")]),
 ]
@@ -134,15 +134,15 @@ BASES = {
     ]),
     # params/sweep.prm, tests/regression/sweep_consistency.prm
     "sweep": (top("sweep"), IMPACT_SECTIONS + [
-        ("Impact", [("Velocities", "0.05"), ("Error estimate", "false"),
+        ("Impact", [("Velocities", "0.05"), ("Convergence study per point", "false"),
                     ("Elements across contact", "6"), ("Grading", "0.6"),
-                    ("Output interval", "0"), ("Mode energies", "0")]),
+                    ("Output interval", "0"), ("Number of projected modes", "0")]),
     ]),
     # params/reference_*.prm
     "reference": (top("reference models"), [
         ("Material", [("Plane model", "plane stress"), ("Poisson ratio", "0.33")]),
         ("Reference models", [("Model", "disk"), ("Velocities", "0.01, 0.05"),
-                              ("Alphas", "0.05")]),
+                              ("Relaxation times", "0.05")]),
     ]),
     # params/modal_expansion.prm, tests/regression/modal_expansion_small.prm
     "expansion": (top("modal expansion impact"), [
@@ -151,7 +151,7 @@ BASES = {
                              ("Potential stiffnesses", "100"),
                              ("Mode counts", "20, 40"),
                              ("Steps per period", "40"),
-                             ("Mode energies", "3")]),
+                             ("Number of listed modes", "3")]),
     ]),
 }
 
@@ -346,7 +346,7 @@ SELECTIONS = [
     ("Contact/Law", "hertz", "impact"),
     ("Time stepping/Scheme", "euler", "impact"),
     ("Time stepping/Contact mass", "lumped", "impact"),
-    ("Impact/Error estimate", "maybe", "sweep"),
+    ("Impact/Convergence study per point", "maybe", "sweep"),
     ("Reference models/Model", "sphere", "reference"),
     ("Modal expansion/Integrator", "rk4", "expansion"),
 ]
@@ -400,9 +400,9 @@ NUMERIC_ENTRIES = [
     ("Impact/Elements across contact", "int", "impact", None),
     ("Impact/Grading", "double", "impact", None),
     ("Impact/Graded half-width", "double", "impact", None),
-    ("Impact/Contact law constant", "double", "impact", None),
+    ("Impact/One-DOF law constant", "double", "impact", None),
     ("Impact/Output interval", "int", "impact", None),
-    ("Impact/Mode energies", "int", "impact", None),
+    ("Impact/Number of projected modes", "int", "impact", None),
     ("Impact/Margin", "double", "impact", None),
     ("Impact/Velocities", "list", "sweep", "0.05"),
     ("Impact/Poisson ratios", "list", "sweep", "0.33"),
@@ -412,17 +412,17 @@ NUMERIC_ENTRIES = [
     ("Impact convergence/Penalty levels", "int", "impactconv", None),
     ("Impact convergence/Degree levels from", "int", "impactconv", None),
     ("Reference models/Velocities", "list", "reference", "0.01"),
-    ("Reference models/Alphas", "list", "reference", "0.05"),
+    ("Reference models/Relaxation times", "list", "reference", "0.05"),
     ("Reference models/Damping ratios", "list", "ref_dashpot", "0.1"),
     ("Reference models/Velocity ratios", "list", "ref_spheres", "1e-4"),
     ("Reference models/Mode counts", "list", "ref_rayleigh", "10"),
     ("Modal expansion/Velocities", "list", "expansion", "0.1"),
     ("Modal expansion/Potential stiffnesses", "list", "expansion", "100"),
     ("Modal expansion/Mode counts", "list", "expansion", "20"),
-    ("Modal expansion/Poisson ratios", "list", "expansion", "0.33"),
+    ("Modal expansion/In-plane Poisson ratios", "list", "expansion", "0.33"),
     ("Modal expansion/Angular points", "int", "expansion", None),
     ("Modal expansion/Steps per period", "double", "expansion", None),
-    ("Modal expansion/Mode energies", "int", "expansion", None),
+    ("Modal expansion/Number of listed modes", "int", "expansion", None),
 ]
 
 # Malformed values per kind: (value, name, description).
@@ -576,11 +576,11 @@ OUT_OF_RANGE = [
     ("Impact/Grading", "2", "impact", "above 1", {}),
     ("Impact/Graded half-width", "-0.1", "impact", "negative", {}),
     ("Impact/Graded half-width", "1.5", "impact", "above 1 (the radius)", {}),
-    ("Impact/Contact law constant", "fitted", "impact",
+    ("Impact/One-DOF law constant", "fitted", "impact",
      "neither 'fit' nor a number", {}),
     ("Impact/Output interval", "-1", "impact", "negative", {}),
-    ("Impact/Mode energies", "-1", "impact", "negative", {}),
-    ("Impact/Mode energies", "401", "impact", "above 400", {}),
+    ("Impact/Number of projected modes", "-1", "impact", "negative", {}),
+    ("Impact/Number of projected modes", "401", "impact", "above 400", {}),
     ("Impact/Margin", "-0.1", "impact", "negative", {}),
     ("Impact/Margin", "11", "impact", "above 10", {}),
     ("Impact/Velocities", "", "sweep", "empty list: nothing to sweep", {}),
@@ -606,7 +606,7 @@ OUT_OF_RANGE = [
     ("Reference models/Velocities", "-0.1", "reference", "negative velocity", {}),
     ("Reference models/Velocities", "0.001, 0.3", "ref_rayleigh",
      "0.3 is too fast for the log law", {}),
-    ("Reference models/Alphas", "-0.1", "reference", "negative", {}),
+    ("Reference models/Relaxation times", "-0.1", "reference", "negative", {}),
     ("Reference models/Damping ratios", "-0.1", "ref_dashpot", "negative", {}),
     ("Reference models/Velocity ratios", "0", "ref_spheres", "zero", {}),
     ("Reference models/Velocity ratios", "-1", "ref_spheres", "negative", {}),
@@ -618,16 +618,16 @@ OUT_OF_RANGE = [
     ("Modal expansion/Potential stiffnesses", "0", "expansion", "zero", {}),
     ("Modal expansion/Potential stiffnesses", "-100", "expansion", "negative", {}),
     ("Modal expansion/Mode counts", "0", "expansion", "zero", {}),
-    ("Modal expansion/Poisson ratios", "1", "expansion",
+    ("Modal expansion/In-plane Poisson ratios", "1", "expansion",
      "in-plane ratio 1 (needs -1 < nu2 < 1)", {}),
-    ("Modal expansion/Poisson ratios", "1.5", "expansion", "in-plane ratio 1.5", {}),
-    ("Modal expansion/Poisson ratios", "-1", "expansion", "in-plane ratio -1", {}),
+    ("Modal expansion/In-plane Poisson ratios", "1.5", "expansion", "in-plane ratio 1.5", {}),
+    ("Modal expansion/In-plane Poisson ratios", "-1", "expansion", "in-plane ratio -1", {}),
     ("Modal expansion/Angular points", "1", "expansion", "below 2", {}),
     ("Modal expansion/Angular points", "0", "expansion", "zero", {}),
     ("Modal expansion/Steps per period", "1", "expansion", "below 2", {}),
     ("Modal expansion/Steps per period", "0", "expansion", "zero", {}),
-    ("Modal expansion/Mode energies", "-1", "expansion", "negative", {}),
-    ("Modal expansion/Mode energies", "101", "expansion", "above 100", {}),
+    ("Modal expansion/Number of listed modes", "-1", "expansion", "negative", {}),
+    ("Modal expansion/Number of listed modes", "101", "expansion", "above 100", {}),
 ]
 
 
@@ -713,7 +713,7 @@ COMBINATIONS = [
     ("disk_revolved_view", "impact", {"Impact/Revolved view": "90"},
      "Revolved view", "a disk with the sphere's 3D view"),
     ("disk_finite_size_law", "impact",
-     {"Impact/Contact law constant": "finite size"}, "finite size",
+     {"Impact/One-DOF law constant": "finite size"}, "finite size",
      "a disk with the sphere's derived finite-size wall law"),
     ("output_directory_is_a_file", "modal", {}, "Output directory",
      "'output' exists as a regular file, so output/case cannot be created"),

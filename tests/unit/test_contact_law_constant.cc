@@ -22,9 +22,9 @@ namespace
   const double pi    = M_PI;
   const double rho_g = 1. / pi; // body force per area, P / (pi R^2)
 
-  /// Michell's stress field: Flamant's point force P at A (seed 001,
-  /// eq. 51), the body-force field (eq. 50 about the centre) and a uniform
-  /// biaxial tension P / (2 pi R).
+  /// Michell's stress field: Flamant's point force P at A (Gerl & Zippelius
+  /// 1999, eq. 51), the body-force field (eq. 50 about the centre) and a
+  /// uniform biaxial tension P / (2 pi R).
   Tensor
   stress(const double x, const double y)
   {
@@ -84,10 +84,10 @@ namespace
     return integrator.integrate(inner, -pi / 2., pi / 2., 1e-12) / pi;
   }
 
-  /// u_x at the centre of the contact for Hertz's pressure (seed 001,
-  /// eq. 46) of half-width a in place of the point force: the half-plane's
-  /// surface displacement -(1/pi)[2 ln|y| + 1 + nu] per unit force,
-  /// averaged over the pressure, plus the smooth part at A.
+  /// u_x at the centre of the contact for Hertz's pressure (Gerl & Zippelius
+  /// 1999, eq. 46) of half-width a in place of the point force: the
+  /// half-plane's surface displacement -(1/pi)[2 ln|y| + 1 + nu] per unit
+  /// force, averaged over the pressure, plus the smooth part at A.
   double
   contact_displacement_x(const double a, const double nu)
   {

@@ -23,7 +23,7 @@ TEST_CASE("LIGGGHTS' Hertz restitution: its epsilon and the input for it",
   CHECK_THROWS(liggghts_hertz_input(1.5));
 }
 
-TEST_CASE("LAMMPS' viscoelastic damping is seed 003's A dF/dt", "[dem]")
+TEST_CASE("LAMMPS' viscoelastic damping is Ramírez et al.'s A dF/dt", "[dem]")
 {
   // A sphere on a wall, not unit-valued: E*, R, m, A, v.
   const double   e_star = 7.3, radius = 0.4, mass = 2.1, A = 0.03, v = 0.2;
@@ -44,11 +44,11 @@ TEST_CASE("LAMMPS' viscoelastic damping is seed 003's A dF/dt", "[dem]")
   const auto lammps = [&](const double d, const double d_dot) {
     return d > 0. ? eta * std::sqrt(radius * d) * mass * d_dot : 0.;
   };
-  const auto seed = collide(mass, v, hertz, A, EndCriterion::force);
-  const auto dem  = collide(mass, v, hertz, lammps, EndCriterion::force);
-  CHECK(dem.epsilon == Approx(seed.epsilon).epsilon(1e-10));
-  CHECK(dem.contact_time == Approx(seed.contact_time).epsilon(1e-10));
-  CHECK(seed.epsilon < 0.99);
+  const auto paper_ode = collide(mass, v, hertz, A, EndCriterion::force);
+  const auto dem       = collide(mass, v, hertz, lammps, EndCriterion::force);
+  CHECK(dem.epsilon == Approx(paper_ode.epsilon).epsilon(1e-10));
+  CHECK(dem.contact_time == Approx(paper_ode.contact_time).epsilon(1e-10));
+  CHECK(paper_ode.epsilon < 0.99);
 }
 
 TEST_CASE("Yade's ViscElMat: the force-clipped linear spring-dashpot", "[dem]")

@@ -1,5 +1,6 @@
 // The analytic free-disk modes: root finder, frequency equations, and the
-// printed equations of seed 001 against the determinant built here.
+// printed equations of Gerl & Zippelius 1999 against the determinant built
+// here.
 
 #include "reference/free_disk_modes.h"
 
@@ -14,9 +15,9 @@ using namespace DiskImpact::Reference;
 
 namespace
 {
-  /// nu2 = 0.33 (plane stress, the seed's Fig. 3), c_L = 1, R = 1.
+  /// nu2 = 0.33 (plane stress, Gerl & Zippelius' Fig. 3), c_L = 1, R = 1.
   FreeDiskModes
-  seed_disk(const double nu2 = 0.33)
+  paper_disk(const double nu2 = 0.33)
   {
     return FreeDiskModes(nu2, 1., 1.);
   }
@@ -27,7 +28,7 @@ TEST_CASE("torsional roots are the zeros of J_2(kappa')", "[reference]")
   // Independent reference: Boost's zeros of J_2; kappa' = kappa c_L / c_T.
   for (const double nu2 : {-0.5, 0., 0.33, 0.9})
     {
-      const FreeDiskModes modes = seed_disk(nu2);
+      const FreeDiskModes modes = paper_disk(nu2);
       for (unsigned int l = 0; l < 5; ++l)
         {
           CAPTURE(nu2, l);
@@ -45,7 +46,7 @@ TEST_CASE("radial roots satisfy the traction-free condition", "[reference]")
 {
   // sigma_rr(1) = 0 for u_r = J_1(kappa r): kappa J_1'(kappa) + nu2 J_1 = 0,
   // checked here with Boost's Bessel derivative, independent of the code's.
-  const FreeDiskModes modes = seed_disk();
+  const FreeDiskModes modes = paper_disk();
   for (unsigned int l = 0; l < 6; ++l)
     {
       const double k = modes.kappa({0, l, ModeFamily::radial});
@@ -62,8 +63,8 @@ TEST_CASE("printed eq. 21 (torsional, with nu) is misprinted", "[reference]")
 {
   // The printed torsional condition dJ_1/dR - (nu/R) J_1 = 0 is not
   // sigma_rphi = 0; its roots differ from those of J_2(kappa') = 0 for
-  // nu2 != 1 (docs/seed-misprints.md).
-  const FreeDiskModes modes = seed_disk();
+  // nu2 != 1 (docs/theory/misprints.md).
+  const FreeDiskModes modes = paper_disk();
   const double        kp =
     modes.kappa({0, 0, ModeFamily::torsional}) * modes.wave_speed_ratio();
   CHECK(std::abs(modes.printed_eq21(kp)) > 1e-2);
@@ -76,7 +77,7 @@ TEST_CASE("printed eq. 25 has the roots of the boundary determinant",
   // torsional families.
   for (const double nu2 : {0.0, 0.33, 0.9})
     {
-      const FreeDiskModes modes = seed_disk(nu2);
+      const FreeDiskModes modes = paper_disk(nu2);
       for (unsigned int n = 0; n <= 8; ++n)
         {
           std::vector<double> roots;
@@ -104,7 +105,7 @@ TEST_CASE("printed eq. 25 has the roots of the boundary determinant",
 TEST_CASE("root finder misses no root", "[reference]")
 {
   // A ten times finer sign-change scan finds the same number of roots.
-  const FreeDiskModes modes = seed_disk(0.9);
+  const FreeDiskModes modes = paper_disk(0.9);
   for (unsigned int n = 1; n <= 6; ++n)
     {
       const auto   roots = modes.kappa_roots(n, ModeFamily::mixed, 10.);
@@ -127,11 +128,12 @@ TEST_CASE("root finder misses no root", "[reference]")
 
 TEST_CASE("lowest modes: ordering and multiplicity", "[reference]")
 {
-  const FreeDiskModes modes = seed_disk();
+  const FreeDiskModes modes = paper_disk();
   const auto          full  = modes.lowest_modes(40, false);
   const auto          half  = modes.lowest_modes(20, true);
   REQUIRE(full.size() == 40);
-  // The lowest mode is the quadrupole (2,0) (seed 001, section 2.2).
+  // The lowest mode is the quadrupole (2,0) (Gerl & Zippelius 1999,
+  // section 2.2).
   CHECK(full[0] == ModeLabel{2, 0, ModeFamily::mixed});
   CHECK(full[1] == ModeLabel{2, 0, ModeFamily::mixed});
   for (unsigned int i = 1; i < full.size(); ++i)

@@ -321,7 +321,7 @@ end
 subsection Impact
   set Velocity                = 0.1
   set Elements across contact = 4
-  set Mode energies           = 0
+  set Number of projected modes = 0
 end
 subsection Time stepping
   set Time step fraction = 0.02

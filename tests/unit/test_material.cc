@@ -1,5 +1,5 @@
 // Material tensors: plane strain and plane stress against independent
-// formulas, and the in-plane mapping of seed 001, eq. 2.
+// formulas, and the in-plane mapping of Gerl & Zippelius 1999, eq. 2.
 
 #include "base/input_error.h"
 #include "elasticity/material.h"
@@ -89,7 +89,8 @@ TEST_CASE("plane strain (E, nu) equals plane stress (E/(1-nu^2), nu/(1-nu))",
     }
 }
 
-TEST_CASE("the seed's nu2 = 0.9 is plane strain with nu = 0.4737", "[material]")
+TEST_CASE("Gerl & Zippelius' nu2 = 0.9 is plane strain with nu = 0.4737",
+          "[material]")
 {
   Material m;
   m.set(PlaneModel::plane_strain, 1., 0.9 / 1.9, 1.);
@@ -101,7 +102,8 @@ TEST_CASE("wave speeds", "[material]")
   Material m;
   m.set(PlaneModel::plane_stress, 2., 0.25, 0.5);
   const double E2 = 2., nu2 = 0.25, rho = 0.5;
-  // c_L^2 = E2 / ((1 - nu2^2) rho) (seed 001, eq. 8), c_T^2 = mu / rho.
+  // c_L^2 = E2 / ((1 - nu2^2) rho) (Gerl & Zippelius 1999, eq. 8), c_T^2 = mu /
+  // rho.
   CHECK(m.longitudinal_wave_speed() ==
         Approx(std::sqrt(E2 / ((1 - nu2 * nu2) * rho))).epsilon(1e-14));
   CHECK(m.transverse_wave_speed() ==

@@ -244,7 +244,8 @@ TEST_CASE("Vibrations take energy; more modes soften the collision",
   CHECK(one < rigid - 0.1);
   CHECK(five < rigid - 0.02);
   CHECK(forty < rigid - 0.02);
-  // seed 001, section 4: eps rises towards 1 with the number of modes
+  // Gerl & Zippelius 1999, section 4: eps rises towards 1 with the number of
+  // modes
   CHECK(one < five);
   CHECK(five < forty);
 }

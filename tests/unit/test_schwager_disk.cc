@@ -189,7 +189,7 @@ TEST_CASE("Schwager disk: eqs. 56 and 80 against the ODE, overlap criterion",
 TEST_CASE("Schwager disk: the force criterion differs at O(alpha^2)",
           "[schwager]")
 {
-  // Ending at zero total force (seed 002) raises epsilon by
+  // Ending at zero total force (Schwager & Pöschel 2007) raises epsilon by
   // G = alpha^2 (-1 - 2s) / (4 s^2), so eq. 80 alone errs by O(alpha^2)
   // against it, and eq. 80 plus G by O(alpha^3).
   const PhysicalDisk            disk;

@@ -1,8 +1,8 @@
 // Stress output for ParaView: the tensor "stress" and the scalars von Mises,
 // principal stresses and pressure on known strain states, hand-computed for
 // plane stress and plane strain with the same in-plane constants (E2 = 1,
-// nu2 = 1/3; plane strain: E = 15/16, nu = 1/4, seed 001, eq. 2), checked
-// against 3D Hooke's law and under rotation.
+// nu2 = 1/3; plane strain: E = 15/16, nu = 1/4, Gerl & Zippelius 1999, eq. 2),
+// checked against 3D Hooke's law and under rotation.
 
 #include "elasticity/material.h"
 #include "elasticity/stress_postprocessor.h"

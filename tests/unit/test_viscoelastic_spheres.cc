@@ -156,7 +156,7 @@ TEST_CASE("Spheres: series eq. 32 against the ODE at small u", "[spheres]")
   for (const double u : {0.02, 0.05, 0.1, 0.2})
     {
       INFO("u = " << u);
-      // overlap criterion (the seed's): first omitted term a_5 u^5; the ODE
+      // overlap criterion (the paper's): first omitted term a_5 u^5; the ODE
       // has 1e-9 (the overlap is not smooth where the collision ends)
       const double overlap = sphere_restitution_ode(u, EndCriterion::overlap);
       const double overlap_tolerance = 1.5 * a5_bound * std::pow(u, 5) + 1e-9;
@@ -400,8 +400,8 @@ TEST_CASE("Kelvin-Voigt unloading law: the force, a linear law, second order",
   const auto   law = hertz_force_law(rho);
   const auto   f_d = kelvin_voigt_unloading_force(law, tau);
   const double xi  = 0.01;
-  // Growing contact: seed 003's tau xi' F'(xi); shrinking: the elastic force
-  // of the approach xi + tau xi', none once that is <= 0.
+  // Growing contact: Ramírez et al.'s tau xi' F'(xi); shrinking: the elastic
+  // force of the approach xi + tau xi', none once that is <= 0.
   CHECK(f_d(xi, 2e-3) == Approx(tau * 2e-3 * law.derivative(xi)));
   CHECK(law.force(xi) + f_d(xi, -2e-3) ==
         Approx(law.force(xi - tau * 2e-3)).epsilon(1e-14));
@@ -411,7 +411,7 @@ TEST_CASE("Kelvin-Voigt unloading law: the force, a linear law, second order",
   // laws give the same collision.
   const ForceLaw linear{[](const double x) { return x > 0. ? 2. * x : 0.; },
                         [](const double x) { return x > 0. ? 2. : 0.; }};
-  const double   e_linear_seed =
+  const double   e_linear_ramirez =
     collide(1., 1., linear, 0.2, EndCriterion::force).epsilon;
   const double e_linear_unloading =
     collide(1.,
@@ -420,12 +420,12 @@ TEST_CASE("Kelvin-Voigt unloading law: the force, a linear law, second order",
             kelvin_voigt_unloading_force(linear, 0.2),
             EndCriterion::force)
       .epsilon;
-  CHECK(e_linear_unloading == Approx(e_linear_seed).epsilon(1e-10));
+  CHECK(e_linear_unloading == Approx(e_linear_ramirez).epsilon(1e-10));
 
   // Hertz's law: (1 + x)^{3/2} > 1 + 3x/2 for the unloading's x = tau xi'/xi,
   // so less is dissipated, by a term of second order in tau.
   auto difference = [&](const double t) {
-    const double seed =
+    const double ramirez =
       collide(1., 1., law, t, EndCriterion::force, 1e-12).epsilon;
     const double unloading = collide(1.,
                                      1.,
@@ -434,8 +434,8 @@ TEST_CASE("Kelvin-Voigt unloading law: the force, a linear law, second order",
                                      EndCriterion::force,
                                      1e-12)
                                .epsilon;
-    CHECK(unloading > seed);
-    return unloading - seed;
+    CHECK(unloading > ramirez);
+    return unloading - ramirez;
   };
   const double ratio = difference(0.02) / difference(0.01);
   CAPTURE(ratio);
