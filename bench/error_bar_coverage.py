@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""Do the error bars hold? The 14 standard points of docs/impact-convergence.md.
+"""Do the error bars hold? The 14 standard points of
+docs/validation/elastic-disk-restitution.md.
 
 For plane stress nu = 0.33 (params/impact_convergence.prm, quadratic, three
 mesh levels) and plane strain nu2 = 0.9 (params/impact_convergence_plane_strain.prm,

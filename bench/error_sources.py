@@ -20,7 +20,7 @@ time step fraction 0.01):
 For each: epsilon, the differences of successive values and the observed
 orders p = log2(d_{i-1}/d_i) (clean convergence: the same p along the
 sequence). Writes the table as CSV and, with --plot, the figure of
-docs/impact-convergence.md.
+docs/theory/impact-accuracy.md.
 
 usage: bench/error_sources.py [-o error_sources.csv] [--plot PNG]
                               [--only NAME ...]

@@ -12,7 +12,8 @@ part of the discretization error that is not smooth in the data. Prints
 the residual's rms and largest value, the point-to-point scatter (the rms
 of the third differences over sqrt(20), the standard deviation of
 independent noise) and the largest jump between neighbouring speeds beyond
-the fitted trend (docs/impact-convergence.md, "epsilon on one mesh").
+the fitted trend (docs/theory/impact-accuracy.md, "ε on one mesh: the rough
+part").
 Each run also reports how many DoFs its contact was condensed on (every DoF
 of the edge the contact ever reached); the speeds where that number grows,
 where the contact zone's largest extent reaches one more node of the edge,

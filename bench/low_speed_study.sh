@@ -3,7 +3,8 @@
 # the 1-DOF log-law model and Rayleigh's model with vibration feedback
 # (params/reference_rayleigh.prm): v = 0.01 ... 1e-6 c on two meshes
 # (3 refinements, 12 elements, tau/200; 4 refinements, 24 elements,
-# tau/400). Prints the table of docs/impact.md, "The 1-DOF limit".
+# tau/400). Prints the table of docs/validation/elastic-disk-restitution.md,
+# "The low-speed limit".
 # About 12 min on one core.
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -1,5 +1,6 @@
 #!/bin/bash
-# The two integrators of the modal-expansion model (docs/modal-expansion.md)
+# The two integrators of the modal-expansion model
+# (docs/theory/modal-expansion-model.md)
 # against the time step: epsilon, energy error and steps at v = 0.1 c,
 # nu2 = 0.33 for (N, alpha) = (20, 100) and (100, 500), RK4 in the
 # interaction picture and the Strang splitting at 5 ... 160 steps per

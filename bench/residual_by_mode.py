@@ -6,8 +6,8 @@ k's energy fraction moves epsilon by -dE_k / (2 epsilon). For every mode
 listed at every speed in modal_expansion_modes.csv, that part of its energy
 is fitted like epsilon (degree 6 in v); the script prints each mode's share
 of epsilon's residual (least-squares factor), its correlation with it, and
-the same for the sum over these modes (docs/impact-convergence.md, "epsilon
-on one mesh").
+the same for the sum over these modes (docs/theory/impact-accuracy.md, "ε on
+one mesh: the rough part").
 
 usage: bench/residual_by_mode.py DIRECTORY [--fit-degree 6] [--most 10]
        (DIRECTORY: the output of a 'modal expansion impact' run of one

@@ -7,7 +7,7 @@ velocity and epsilon. On the speeds that all tables share, each table's
 residual from a degree-6 fit in v is compared with the reference's: their
 correlation, the reference's shape's amplitude in it (the least-squares
 factor) and the rms left once that shape is removed
-(docs/impact-convergence.md, "epsilon on one mesh").
+(docs/theory/impact-accuracy.md, "ε on one mesh: the rough part").
 
 usage: bench/residual_correlation.py REFERENCE.csv TABLE.csv [TABLE.csv ...]
            [--fit-degree 6]

@@ -1,10 +1,10 @@
 #!/bin/bash
-# The time-integration choices of docs/impact.md at v = 0.1 c (2 global
-# refinements, 12 elements across the contact, kappa = 100): epsilon for
-# dt = tau/100, tau/200, tau/400 with the energy-conserving midpoint rule
-# (consistent mass), with mass redistribution, and with generalized-alpha
-# (rho_inf = 0.8, redistributed mass), and the space-time sequence used by
-# the convergence study.
+# The time-integration choices of docs/theory/impact-method.md at v = 0.1 c
+# (2 global refinements, 12 elements across the contact, kappa = 100):
+# epsilon for dt = tau/100, tau/200, tau/400 with the energy-conserving
+# midpoint rule (consistent mass), with mass redistribution, and with
+# generalized-alpha (rho_inf = 0.8, redistributed mass), and the space-time
+# sequence used by the convergence study.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 work=$(mktemp -d)

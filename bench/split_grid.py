@@ -10,8 +10,8 @@ step / 2^t), one study per speed and mesh level, on 2 MPI ranks. Prints
 epsilon per cell, then per speed the split's parts at mesh level 1,
 d_t = eps(0, t) - eps(0, t - 1) and d_h = eps(1, t) - eps(0, t), and the bar
 3 (|d_t| + |d_h|), at t = 1 (the study's second level) and t = 2 (its time
-step halved once): the table of docs/impact-convergence.md, "Refine what
-the split says".
+step halved once): what decides between a time step halving and a mesh
+level (docs/theory/impact-method.md).
 
 usage: bench/split_grid.py PRM --speeds 0.005,0.1 [--mesh-levels 0,1]
                            [--time-levels 3] [--diskimpact build/diskimpact]

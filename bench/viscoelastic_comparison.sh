@@ -1,5 +1,6 @@
 #!/bin/bash
-# FE Kelvin-Voigt impacts against the 1-DOF ODE (docs/reference-models.md):
+# FE Kelvin-Voigt impacts against the 1-DOF ODE
+# (docs/validation/viscoelastic-disk.md):
 # plane stress nu = 0.33, 2 refinements, 12 elements across the contact,
 # kappa = 100, dt = tau/200, at v = 0.01 c and 0.005 c for tau = alpha =
 # 0, 0.02, 0.05, 0.1 (E2 = rho = R = 1). Prints epsilon and the ODE's.

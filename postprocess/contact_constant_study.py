@@ -2,7 +2,7 @@
 """The constants C_com and C_diameter of the contact law
 delta = P/(pi E2) [ln(4 pi R E2 / P) + C] as the load goes to zero, with
 error bars, against the exact constants C_com = -2 ln 2 - (1 + nu2)/4 and
-C_diameter = -1 (docs/contact-law.md).
+C_diameter = -1 (docs/theory/disk-contact-constants.md).
 
 First it checks the derivation numerically (the stress field is traction
 free and in equilibrium, the displacement field has its strain, and the
@@ -79,7 +79,7 @@ end
 
 
 def exact_constants(nu2):
-    """The derived constants (docs/contact-law.md)."""
+    """The derived constants (docs/theory/disk-contact-constants.md)."""
     return {"C_com": -2.0 * math.log(2.0) - (1.0 + nu2) / 4.0, "C_diameter": -1.0}
 
 

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """epsilon(v) of two colliding bodies with error bars, one curve per
 partner radius (task 'sweep' with 'Kind = body' in subsection Partner), and
-the table of docs/two-bodies.md.
+its table (docs/guide/two-bodies.md).
 
 With --wall, a sweep of the single body on the wall: its epsilon at v is
 drawn at the relative speed 2v (identical bodies meeting at 2v are the

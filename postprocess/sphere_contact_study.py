@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """The finite-size correction of Hertz's law for a sphere pressed on a rigid
-wall by a uniform body force (docs/sphere.md).
+wall by a uniform body force (docs/theory/sphere-finite-size.md).
 
 Hertz's half-space theory gives the approach delta_H = a^2 / R,
 a^3 = 3 P R / (4 E*). A finite sphere adds a term of relative order a/R;
@@ -18,7 +18,8 @@ with tractions ~P/(rho R), which displace the contact region by
     D(a) = D0 + D1 ln(a/R)
 
 over a/R = 0.0025, 0.005, 0.01, 0.02 for each Poisson ratio, both with D1
-free and with D1 fixed at its derived value (docs/sphere.md)
+free and with D1 fixed at its derived value
+(docs/theory/sphere-finite-size.md)
 
     D1 = -(1 - 2 nu)^2 / (2 pi (1 - nu)),
 
@@ -82,7 +83,8 @@ def load_of(radius):
 
 def run(diskimpact, directory, nu, kappa, n, grading):
     """D_com and D_diameter (arrays over CONTACT_RADII) of one run, and the
-    derived D0 of both (printed by the run, docs/sphere.md)."""
+    derived D0 of both (printed by the run,
+    docs/theory/sphere-finite-size.md)."""
     name = f"nu{nu}_k{kappa:g}_n{n}_g{grading}"
     out = os.path.join(directory, name)
     prm = os.path.join(directory, name + ".prm")

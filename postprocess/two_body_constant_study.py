@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """The constants of the two-disk contact law, measured with error bars,
-against the law derived in docs/two-bodies.md.
+against the law derived in docs/theory/two-body-law.md.
 
 Two half disks (plane strain) pressed together by equal and opposite
 uniform body forces of total P (task 'quasistatic contact' with
@@ -10,9 +10,10 @@ gives the pair's constant
     C_pair = pi E_eff delta / P - 2 ln(4 R_eff / a),   a^2 = 4 P R_eff / (pi E_eff),
 
 to compare with C_eff = sum_i w_i [C_i + 2 ln(R_i / R_eff)], w_i = E_eff / E_i,
-C_i = -2 ln 2 - (1 + nu2_i) / 4 (docs/contact-law.md); each body's share of
-the approach (its contact centre relative to its centre of mass) gives its
-own C_i at the common a, which the derivation says is its wall constant.
+C_i = -2 ln 2 - (1 + nu2_i) / 4 (docs/theory/disk-contact-constants.md);
+each body's share of the approach (its contact centre relative to its
+centre of mass) gives its own C_i at the common a, which the derivation
+says is its wall constant.
 
 Configurations: R2/R1 = 1, 1/2, 1/4 for pair A (both E = 1, nu = 0.3) and
 pair B (partner E = 3, nu = 0.2). Method of postprocess/contact_constant_study.py,

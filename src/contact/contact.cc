@@ -138,7 +138,7 @@ namespace DiskImpact
       "far from the wall, 36.8 R / s); 'constraint', no "
       "penetration at the edge nodes (g >= 0 exactly, the "
       "pressure a Lagrange multiplier; the contact zone's "
-      "edge carries no mass, docs/impact-convergence.md).");
+      "edge carries no mass, docs/theory/impact-method.md).");
     prm.declare_entry("Potential stiffness",
                       "100",
                       Patterns::Double(),

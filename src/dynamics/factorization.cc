@@ -50,10 +50,11 @@ namespace DiskImpact
     if (on_one_rank)
       {
         // On one rank PETSc's own Cholesky of a sequential copy solves 2-3
-        // times faster than MUMPS (docs/impact-convergence.md, "One rank's
-        // solver"): in blocks of the support points' components, reordered
-        // by AMD, or else (or if PETSc's options choose the solver or the
-        // ordering) of the scalar matrix with nested dissection.
+        // times faster than MUMPS (docs/theory/impact-method.md, "The
+        // condensed contact solve"): in blocks of the support points'
+        // components, reordered by AMD, or else (or if PETSc's options choose
+        // the solver or the ordering) of the scalar matrix with nested
+        // dissection.
         const auto &first = *A.front().matrix;
         if (block_size > 1 && first.m() % block_size == 0 &&
             !factorization_set_by_options())

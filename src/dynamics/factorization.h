@@ -35,12 +35,11 @@ namespace DiskImpact
    * and keeps what depends on the pattern alone: the block copy's order
    * and allocation and the symbolic factorization. The runs of a study on
    * one mesh differ in their time step, so in A's values only
-   * (docs/impact-convergence.md, "One factorization per mesh").
+   * (docs/theory/impact-method.md, "The condensed contact solve").
    *
    * A may be given as a MatrixSum. The block copy takes the sum of the
    * terms' values directly; otherwise the factorization sums them into a
-   * matrix of its own (docs/impact-convergence.md, "The effective matrix
-   * without a matrix of its own").
+   * matrix of its own (docs/theory/impact-method.md).
    */
   class Factorization
   {

@@ -16,10 +16,9 @@ namespace DiskImpact
    * Cholesky factorizes this copy in its natural order with its block
    * kernels, several times faster than the scalar matrix with nested
    * dissection; the solves are faster with cubic and quartic elements,
-   * slower with quadratic ones (docs/impact-convergence.md, "One rank's
-   * solver"). Any grouping of the
-   * rows gives the same solution; the grouping by support point gives the
-   * densest blocks.
+   * slower with quadratic ones (docs/theory/impact-method.md, "The condensed
+   * contact solve"). Any grouping of the rows gives the same solution; the
+   * grouping by support point gives the densest blocks.
    */
   class SymmetricBlockCopy
   {

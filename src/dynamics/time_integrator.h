@@ -28,8 +28,9 @@ namespace DiskImpact
    * no numerical dissipation). f_bar is (1 - af) f_c(u1) + af f_c(u0), or,
    * in the scheme 'energy conserving' (rho = 1), the discrete gradient of
    * the contact energy, with which kinetic + strain + contact energy is
-   * conserved exactly (docs/impact.md). The integrator knows nothing about
-   * finite elements: it gives the coefficients and updates vectors.
+   * conserved exactly (docs/theory/impact-method.md). The integrator knows
+   * nothing about finite elements: it gives the coefficients and updates
+   * vectors.
    */
   class TimeIntegrator
   {

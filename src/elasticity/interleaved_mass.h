@@ -20,7 +20,7 @@ namespace DiskImpact
    * and columns M = m ⊗ I2, with the DoFs of each support point numbered
    * together (x, y). So one scalar matrix m, applied to both components at
    * once by PETSc's MAIJ format, reads half the entries and indices that M
-   * does (docs/impact-convergence.md, "The product with M").
+   * does (docs/theory/impact-method.md).
    *
    * m is read off M itself, and only if M has that structure exactly (the
    * x-x and y-y entries equal to rounding where both are unconstrained, no

@@ -74,7 +74,8 @@ namespace DiskImpact
     unsigned int
     n_cells() const;
 
-    /// modes.csv (interface.md); a sphere's has the z_parity column.
+    /// modes.csv (docs/reference/output-files.md); a sphere's has the
+    /// z_parity column.
     static void
     write_modes_csv(const std::vector<ModeResult> &modes,
                     const std::string             &filename,

@@ -56,9 +56,10 @@ namespace DiskImpact
 
     /**
      * The dissipative force f_d(xi, xi') of a Kelvin-Voigt body with one
-     * relaxation time @p relaxation_time, quasistatic (docs/sphere.md,
-     * "Kelvin-Voigt unloading"): u + tau u' is the elastic field of the
-     * current load, so while the contact grows (xi' >= 0) the force is
+     * relaxation time @p relaxation_time, quasistatic
+     * (docs/theory/viscoelastic-spheres.md, "The Kelvin–Voigt unloading
+     * law"): u + tau u' is the elastic field of the current load, so while
+     * the contact grows (xi' >= 0) the force is
      * F(xi) + tau xi' F'(xi) (Lee and Radok; Ramírez et al.'s eq. 5 with A =
      * tau), and while it shrinks the edge must stay free of tension, which sets
      * the elastic contact of the approach xi + tau xi': F(xi + tau xi')

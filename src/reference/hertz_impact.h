@@ -39,9 +39,10 @@ namespace DiskImpact
      * The wall law of a finite sphere as a force law for collide(): the
      * approach of the centre of mass delta = delta_H(P) + D P / (E* R), with
      * Hertz's delta_H = (9 P^2 / (16 R E*^2))^{1/3} and the finite-size
-     * constant @p finite_size_constant D (docs/sphere.md); D = 0 is Hertz's
-     * F = (4/3) E* sqrt(R) delta^{3/2}. In the load x = P / (pi E* R^2) and
-     * d = delta / R: d = (3 pi x / 4)^{2/3} + pi D x, inverted numerically.
+     * constant @p finite_size_constant D (docs/theory/sphere-finite-size.md);
+     * D = 0 is Hertz's F = (4/3) E* sqrt(R) delta^{3/2}. In the load
+     * x = P / (pi E* R^2) and d = delta / R: d = (3 pi x / 4)^{2/3} + pi D x,
+     * inverted numerically.
      * For D < 0 the law holds up to the largest approach, where
      * dd/dx = 0; beyond it the force throws std::domain_error.
      */

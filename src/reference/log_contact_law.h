@@ -13,7 +13,8 @@ namespace DiskImpact
      *
      * (equivalently delta = P/(pi E2) [ln(4 pi R E2 / P) + C]); Gerl &
      * Zippelius print C = -1 - nu2. The constant depends on which compression
-     * is meant and on how the load is applied (docs/contact-law.md).
+     * is meant and on how the load is applied
+     * (docs/theory/disk-contact-constants.md).
      */
     class LogContactLaw
     {
@@ -61,14 +62,15 @@ namespace DiskImpact
      *   C_com = -2 ln 2 - (1 + nu2) / 4,
      *
      * i.e. delta_com = P/(pi E2) [ln(pi R E2 / P) - (1 + nu2)/4]
-     * (docs/contact-law.md). @p nu2 is the in-plane Poisson ratio.
+     * (docs/theory/disk-contact-constants.md). @p nu2 is the in-plane
+     * Poisson ratio.
      */
     double
     centre_of_mass_constant(double nu2);
 
     /// The constant C of the shortening of the diameter on the impact axis,
-    /// -1 for every Poisson ratio (docs/contact-law.md; Gerl & Zippelius 1999,
-    /// eq. 57 prints -1 - nu2).
+    /// -1 for every Poisson ratio (docs/theory/disk-contact-constants.md;
+    /// Gerl & Zippelius 1999, eq. 57 prints -1 - nu2).
     double
     diameter_constant();
   } // namespace Reference

@@ -44,7 +44,7 @@ namespace DiskImpact
       /// force alpha m v^2 / (2 R).
       double contact_threshold = 0.01;
       /// The more accurate per force evaluation on one collision (measured
-      /// in docs/modal-expansion.md).
+      /// in docs/theory/modal-expansion-model.md).
       ModalIntegrator integrator =
         ModalIntegrator::runge_kutta_interaction_picture;
     };

@@ -51,7 +51,8 @@ namespace DiskImpact
       // Units P = R = E* = 1. The sphere's surface displacement under an
       // inward unit force at the pole and the balancing body force, relative
       // to the centre of mass, is u_rho = sum_m U_m P_m(cos theta),
-      // u_theta = sum_m V_m dP_m/dtheta (docs/sphere.md). For m >= 2
+      // u_theta = sum_m V_m dP_m/dtheta (docs/theory/sphere-finite-size.md).
+      // For m >= 2
       //   U_m = -1/pi + k/(m - 1) + k (alpha m + beta) / Q(m),
       //   Q(m) = m^2 + (2 nu + 1) m + nu + 1, k = 1/(4 pi (nu - 1)),
       // and U_m -> -1/pi + D1/m, V_m -> v1/m.

@@ -8,7 +8,7 @@ namespace DiskImpact
   {
     /**
      * The finite-size law of a sphere pressed on the rigid wall by a
-     * uniform body force (docs/sphere.md, "The finite-size term, derived"):
+     * uniform body force (docs/theory/sphere-finite-size.md):
      *
      *   delta = delta_H(P) + (P / (E* R)) [D0 + D1 ln(a / R)],
      *

@@ -24,8 +24,8 @@ namespace DiskImpact
 
     /**
      * The single body on a rigid wall whose wall law is the two bodies' law
-     * (docs/two-bodies.md): 1/R_eff = 1/R_1 + 1/R_2, 1/E_eff = 1/E_1 + 1/E_2,
-     * and with the weights w_i = E_eff / E_i
+     * (docs/theory/two-body-law.md): 1/R_eff = 1/R_1 + 1/R_2,
+     * 1/E_eff = 1/E_1 + 1/E_2, and with the weights w_i = E_eff / E_i
      *
      *   disks:   C_eff = sum_i w_i [C_i + 2 ln(R_i / R_eff)],
      *   spheres: D_eff = sum_i w_i (R_eff / R_i) D_i,
@@ -54,7 +54,7 @@ namespace DiskImpact
      * The approach delta = delta_1 + delta_2 of the centres of mass of two
      * disks pressed together by the force @p force per unit thickness, each
      * with its own wall law at the common Hertz half-width a
-     * (two_body_half_width(); docs/two-bodies.md):
+     * (two_body_half_width(); docs/theory/two-body-law.md):
      *
      *   delta = sum_i P / (pi E2_i) [2 ln(4 R_i / a) + C_i]
      *
@@ -69,7 +69,7 @@ namespace DiskImpact
     /**
      * The approach of the centres of two spheres pressed together by
      * @p force: Hertz's approach of the pair plus each sphere's finite-size
-     * term (docs/sphere.md, docs/two-bodies.md),
+     * term (docs/theory/sphere-finite-size.md, docs/theory/two-body-law.md),
      *
      *   delta = a^2 / R_eff + sum_i D_i P / (E*_i R_i),
      *
@@ -92,8 +92,8 @@ namespace DiskImpact
      *   sphere: D = (approach - 3 P / (4 a E)) E R / P.
      *
      * With equivalent_body() and the pair's approach it gives the pair's
-     * C_eff or D_eff (docs/two-bodies.md). Only the radius and modulus of
-     * @p body are used.
+     * C_eff or D_eff (docs/theory/two-body-law.md). Only the radius and
+     * modulus of @p body are used.
      */
     double
     wall_law_constant(bool               sphere,

@@ -58,10 +58,10 @@ namespace DiskImpact
     };
 
     /**
-     * The coefficients as verified (docs/viscoelastic-spheres.md): a_1 = 1,
-     * a_2 = 3/5 (exact), a_3 = 0.3407290, a_4 = 0.1970206 (the appendix's
-     * route with correct y_2, y_3, confirmed by a least-squares fit of the
-     * ODE's epsilon).
+     * The coefficients as verified (docs/theory/viscoelastic-spheres.md):
+     * a_1 = 1, a_2 = 3/5 (exact), a_3 = 0.3407290, a_4 = 0.1970206 (the
+     * appendix's route with correct y_2, y_3, confirmed by a least-squares
+     * fit of the ODE's epsilon).
      */
     constexpr SphereSeriesCoefficients
       verified_sphere_coefficients{1., 0.6, 0.3407290271, 0.1970206380};

@@ -74,10 +74,9 @@ namespace DiskImpact
        * The 1-DOF impact with Kelvin-Voigt viscosity, m delta'' + F +
        * A delta' F' = 0 with A = @p relaxation_time (the viscous stress
        * tau C : eps_dot is tau times the elastic stress of the velocity, so
-       * quasistatically the viscous force is tau dF/dt; docs/sphere.md),
-       * ended when the total force returns to zero (Schwager & Pöschel 2007),
-       * or with
-       * @p end.
+       * quasistatically the viscous force is tau dF/dt;
+       * docs/theory/viscoelastic-spheres.md), ended when the total force
+       * returns to zero (Schwager & Pöschel 2007), or with @p end.
        */
       Collision
       viscous_impact(double       mass,

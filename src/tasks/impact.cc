@@ -28,9 +28,10 @@ namespace DiskImpact
   {
     /// The contact-law constant of the 1-DOF model. A disk's: "exact" is
     /// the centre-of-mass constant C_com = -2 ln 2 - (1 + nu2)/4, "fit" the
-    /// earlier fit -1 - 2/pi - nu2/4 to the FE (docs/contact-law.md). A
-    /// sphere's finite-size constant D: "exact" is Hertz's law (D = 0),
-    /// the limit a / R -> 0. Else a number.
+    /// earlier fit -1 - 2/pi - nu2/4 to the FE
+    /// (docs/validation/disk-contact-law.md). A sphere's finite-size
+    /// constant D: "exact" is Hertz's law (D = 0), the limit a / R -> 0.
+    /// Else a number.
     double
     parse_contact_law_constant(const std::string &text,
                                const double       nu2,
@@ -88,8 +89,7 @@ namespace DiskImpact
                       "graded half-width [-]; beyond it the size grows by "
                       "'Grading'. Below 1 the contact zone's edge lies in "
                       "the growing elements, which quartic elements allow "
-                      "(docs/impact-convergence.md, \"A smaller fine "
-                      "zone\").");
+                      "(docs/validation/elastic-disk-restitution.md).");
     prm.declare_entry("Graded half-width",
                       "0",
                       Patterns::Double(0., 1.),
@@ -338,7 +338,7 @@ namespace DiskImpact
     require(body.geometry.is_axisymmetric(),
             "Impact: 'One-DOF law constant = finite size' is the sphere's "
             "law; a disk takes 'exact', 'fit' or a number");
-    // D = D0 + D1 ln(a/R) (docs/sphere.md, "The finite-size term, derived").
+    // D = D0 + D1 ln(a/R) (docs/theory/sphere-finite-size.md).
     return Reference::sphere_finite_size_term(
       Reference::sphere_finite_size_constants(body.material.poisson_ratio()),
       contact_radius / body.geometry.radius());
@@ -439,7 +439,7 @@ namespace DiskImpact
   Impact::estimate_pair_collision(const Parameters &parameters) const
   {
     // The relative motion of two bodies: the reduced mass on the pair's
-    // law (docs/two-bodies.md), with each body's own constant.
+    // law (docs/theory/two-body-law.md), with each body's own constant.
     const bool   sphere  = parameters.geometry.is_axisymmetric();
     const auto  &partner = parameters.partner;
     const double R       = parameters.geometry.radius();
@@ -466,8 +466,8 @@ namespace DiskImpact
       {
         within_law = false;
         // Beyond the pair's law: the wall's estimate (Gerl & Zippelius 1999,
-        // eq. 61) for the equivalent body (docs/two-bodies.md) with the reduced
-        // mass, or Hertz's (D = 0) for spheres; no 1-DOF values.
+        // eq. 61) for the equivalent body (docs/theory/two-body-law.md) with
+        // the reduced mass, or Hertz's (D = 0) for spheres; no 1-DOF values.
         const auto eq = Reference::equivalent_body(sphere, body, other);
         if (sphere)
           {

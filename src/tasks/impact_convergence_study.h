@@ -55,8 +55,9 @@ namespace DiskImpact
    *              grading / 2^l (every element size halved; the penalty
    *              k = kappa E2 / h doubles) and dt / 2^l: a finer mesh
    *              carries higher frequencies, which a fixed step does not
-   *              resolve (docs/impact.md); ratio 2, expected order 1 (the
-   *              penalty's gap error, proportional to 1/k, i.e. to h);
+   *              resolve (docs/theory/impact-method.md); ratio 2, expected
+   *              order 1 (the penalty's gap error, proportional to 1/k,
+   *              i.e. to h);
    *              from a 'Degree levels from' level L0 on, the mesh of
    *              level L0 - 1 with the degree raised by l - L0 + 1 and the
    *              penalty factor doubled as often (k doubles per level);

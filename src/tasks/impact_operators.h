@@ -25,8 +25,8 @@ namespace DiskImpact
    * damping) operators with their massless edge zone, the constraints as a
    * matrix, the wall law and the bound on the contact candidates' gap. The
    * runs of a convergence study that differ only in their time step share
-   * one (docs/impact-convergence.md, "Runs on one mesh share it"); the time
-   * stepping only reads it, besides the effective matrix and its
+   * one (docs/theory/impact-method.md, "The condensed contact solve"); the
+   * time stepping only reads it, besides the effective matrix and its
    * factorization, which each run's time step makes afresh.
    */
   struct ImpactOperators

@@ -477,7 +477,7 @@ namespace DiskImpact
     // equilibrium with the point forces mu1 there, so the step force is
     // P = af F(mu0) + (1 - af) F(mu1), the end state u1 = y + X P and its
     // gaps g = q + W mu1 with W = (1 - af) B S B^T: a complementarity
-    // problem on the points that can touch (docs/impact-convergence.md).
+    // problem on the points that can touch (docs/theory/impact-method.md).
     const double new_weight = parameters.time_integrator.contact_new_weight();
     for (;;)
       {
@@ -631,8 +631,8 @@ namespace DiskImpact
     const double v_com  = mean_along_normal(v);
     const double x_com  = mean_along_normal(u) / R;
     const double total  = kinetic + strain + factor * step.energy + dissipated;
-    // The step's mean force (its impulse / dt): the time discretization
-    // fixes this mean, not the end-of-step force (docs/impact.md).
+    // The step's mean force (its impulse / dt): the time discretization fixes
+    // this mean, not the end-of-step force (docs/theory/impact-method.md).
     const double force = factor * step.force_average / force_unit;
     energy_error =
       std::max(energy_error, std::abs(total - energy_initial) / energy_initial);

@@ -25,13 +25,13 @@ namespace DiskImpact
   struct Parameters;
 
   /**
-   * One impact (task 'impact', docs/impact.md): the 1-DOF estimate of the
-   * collision, the mesh graded toward the contact, the operators, time
-   * stepping with the contact condensed on its DoFs (CondensedSolver), the
-   * end of the collision (the step-mean contact force back at zero, Schwager
-   * & Pöschel 2007) plus a margin, and the outputs. Built and run once; its
-   * mesh and operators may be shared with runs that differ only in the time
-   * step.
+   * One impact (task 'impact', docs/theory/impact-method.md): the 1-DOF
+   * estimate of the collision, the mesh graded toward the contact, the
+   * operators, time stepping with the contact condensed on its DoFs
+   * (CondensedSolver), the end of the collision (the step-mean contact
+   * force back at zero, Schwager & Pöschel 2007) plus a margin, and the
+   * outputs. Built and run once; its mesh and operators may be shared with
+   * runs that differ only in the time step.
    */
   class ImpactSimulation
   {

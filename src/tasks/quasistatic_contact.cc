@@ -479,7 +479,8 @@ namespace DiskImpact
         line << std::fixed << std::setprecision(6)
              << "Sphere: D = (delta - delta_Hertz) E* R / P, delta_Hertz = "
                 "(9 P^2 / (16 R E*^2))^(1/3)\n"
-             << "Derived (docs/sphere.md): D = D0 + D1 ln(a/R), D1 = "
+             << "Derived (docs/theory/sphere-finite-size.md): D = D0 + D1 "
+                "ln(a/R), D1 = "
              << derived.log_coefficient << ", D0 = " << derived.centre_of_mass
              << " (com), " << derived.diameter << " (diameter)\n";
         pcout << line.str() << std::flush;

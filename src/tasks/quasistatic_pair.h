@@ -42,8 +42,8 @@ namespace DiskImpact
   /**
    * Two bodies (subsection Partner) pressed together head-on by equal and
    * opposite uniform body forces of total P, the two-body version of the
-   * quasistatic wall problem (docs/two-bodies.md): each body decelerated by
-   * its contact with the other.
+   * quasistatic wall problem (docs/theory/two-body-law.md): each body
+   * decelerated by its contact with the other.
    *
    * Each body is free to translate along the axis, so K is singular. The
    * far pole of each body is held (x-displacement zero) and the body's

@@ -109,7 +109,8 @@ namespace DiskImpact
     }
 
     /// The papers' 1-DOF epsilon at speed @p v with dissipative constant A
-    /// (the Kelvin-Voigt relaxation time, docs/sphere.md: A = tau).
+    /// (the Kelvin-Voigt relaxation time,
+    /// docs/theory/viscoelastic-spheres.md: A = tau).
     double
     theory_epsilon(const Parameters &parameters, const double v, const double A)
     {

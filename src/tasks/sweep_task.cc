@@ -508,8 +508,8 @@ namespace DiskImpact
     // The fastest points first: their studies tend to take the most levels,
     // so the long points start first and the short ones fill the ranks'
     // ends (on the twenty-speed plane-stress curve the two fastest points
-    // take two thirds of the work; docs/impact-convergence.md, "Taking the
-    // fastest points first"). Every rank sorts alike.
+    // take two thirds of the work; docs/guide/sweeps.md, "On several MPI
+    // ranks"). Every rank sorts alike.
     std::vector<int> pending;
     for (unsigned int i = 0; i < points.size(); ++i)
       if (points[i].status != "done")

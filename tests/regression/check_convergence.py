@@ -1,8 +1,8 @@
 #!/usr/bin/python3
 """The observed orders of a modal_convergence.csv on its finest level are
 within +-TOL of 2k for every degree k. Errors below FLOOR are round-off
-(docs/modal-analysis.md: Q3 errors stop following h^6 near 1e-13) and are
-not judged; at least 3 modes per degree must be judged.
+(docs/validation/free-disk-modes.md: Q3 errors stop following h^6 near 1e-13)
+and are not judged; at least 3 modes per degree must be judged.
 
 usage: check_convergence.py modal_convergence.csv TOL FLOOR
 """

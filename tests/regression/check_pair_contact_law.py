@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Assertions on contact_law.csv of task 'quasistatic contact' with a
-partner body (docs/two-bodies.md).
+partner body (docs/validation/two-bodies.md).
 
 usage: check_pair_contact_law.py contact_law.csv TOL
 

@@ -3,10 +3,10 @@
 
 D = (delta - delta_H) E* R / P drifts with ln(a/R); the first-order
 curvature correction of Boussinesq's field gives the coefficient
-D1 = -(1 - 2 nu)^2 / (2 pi (1 - nu)) (docs/sphere.md), for the centre of
-mass and the diameter alike. Fits D = D0 + D1 ln(a/R) by least squares over
-the rows of contact_law.csv (a/R = hertz_half_width) and requires
-|D1_fitted - D1_derived| <= TOL for D_com and D_diameter.
+D1 = -(1 - 2 nu)^2 / (2 pi (1 - nu)) (docs/theory/sphere-finite-size.md),
+for the centre of mass and the diameter alike. Fits D = D0 + D1 ln(a/R) by
+least squares over the rows of contact_law.csv (a/R = hertz_half_width) and
+requires |D1_fitted - D1_derived| <= TOL for D_com and D_diameter.
 
 usage: check_sphere_log_coefficient.py contact_law.csv NU TOL
 """

@@ -2,9 +2,10 @@
 """A study with 'Target error' ran the fewest mesh levels whose bar meets it.
 
 Recomputes the mesh sequence's bar after each level from impact_convergence.csv
-with the fallback rule (docs/impact.md), and requires: the study stopped at the
-first level count whose bar is <= TARGET (or at LARGEST), it ran more than the
-MINIMUM levels it starts with, and epsilon_estimate.csv reports that bar.
+with the fallback rule (docs/theory/impact-method.md), and requires: the
+study stopped at the first level count whose bar is <= TARGET (or at
+LARGEST), it ran more than the MINIMUM levels it starts with, and
+epsilon_estimate.csv reports that bar.
 
 usage: check_target_error.py OUTPUT_DIR TARGET MINIMUM LARGEST
 """

@@ -10,10 +10,10 @@ using namespace DiskImpact::Reference;
 
 // The contact-law constants of a disk pressed on the wall by a uniform body
 // force, evaluated numerically from the elastic field of the derivation in
-// docs/contact-law.md, independently of the closed forms coded in
-// log_contact_law.cc. Units R = E2 = P = 1; origin at the contact point A,
-// the disk's centre at (1, 0), the far end of the diameter B at (2, 0); the
-// body force, of density P / (pi R^2), points to the wall (-x).
+// docs/theory/disk-contact-constants.md, independently of the closed forms
+// coded in log_contact_law.cc. Units R = E2 = P = 1; origin at the contact
+// point A, the disk's centre at (1, 0), the far end of the diameter B at
+// (2, 0); the body force, of density P / (pi R^2), points to the wall (-x).
 namespace
 {
   using Vector = std::array<double, 2>;

@@ -12,8 +12,9 @@ using namespace DiskImpact::Reference;
 
 namespace
 {
-  const double nu2      = 0.33;
-  const double constant = -1. - 2. / M_PI - nu2 / 4.; // C_com, contact-law.md
+  const double nu2 = 0.33;
+  // C_com, docs/theory/disk-contact-constants.md
+  const double constant = -1. - 2. / M_PI - nu2 / 4.;
 
   /// Energy of one mode after the 1-DOF collision, by integrating
   /// delta, Q together in time (Dormand-Prince), without Fourier integrals.

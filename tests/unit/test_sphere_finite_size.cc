@@ -14,7 +14,7 @@ using namespace DiskImpact::Reference;
 // sphere's response to a point force at the pole is solved here from its
 // 2x2 traction system (Lame's solutions grad(rho^m P_m) and
 // rho^2 grad(w) + alpha x w, w = rho^m P_m), and the series are summed
-// numerically (docs/sphere.md, "The finite-size term, derived").
+// numerically (docs/theory/sphere-finite-size.md).
 // Units P = R = E* = 1.
 namespace
 {
@@ -186,8 +186,8 @@ TEST_CASE("Sphere finite size: the FE study's constants within their bars",
           "[reference][sphere]")
 {
   // postprocess/sphere_contact_study.py with D1 fixed at the derived value
-  // (docs/sphere.md): D0 of the centre of mass and of the diameter, and
-  // their bars (mesh, grading, penalty, fit).
+  // (docs/validation/sphere-contact-law.md): D0 of the centre of mass and of
+  // the diameter, and their bars (mesh, grading, penalty, fit).
   struct Measured
   {
     double nu, com, diameter, bar;

@@ -29,7 +29,8 @@ namespace
     return centre_of_mass_constant(3. / 7.);
   }
 
-  /// The sphere's D0 for the centre of mass at nu = 0.3 (docs/sphere.md).
+  /// The sphere's D0 for the centre of mass at nu = 0.3
+  /// (docs/theory/sphere-finite-size.md).
   const double sphere_constant =
     sphere_finite_size_constants(0.3).centre_of_mass;
 

@@ -18,7 +18,8 @@ using namespace DiskImpact::Reference;
 namespace
 {
   /// The overlap criterion's series needs a_5 = 0.117 for its first omitted
-  /// term (least-squares fit, docs/viscoelastic-spheres.md); rounded up.
+  /// term (least-squares fit, docs/theory/viscoelastic-spheres.md); rounded
+  /// up.
   constexpr double a5_bound = 0.12;
 
   /**
