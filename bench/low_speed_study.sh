@@ -21,7 +21,9 @@ done
 /usr/bin/python3 - "$work" $velocities <<'EOP'
 import csv, math, sys
 work, velocities = sys.argv[1], sys.argv[2:]
-model = [{k: float(x) for k, x in r.items()}
+# Empty cells (a column a model or a wall run leaves blank) read as NaN.
+number = lambda x: float(x) if x else math.nan
+model = [{k: number(x) for k, x in r.items()}
          for r in csv.DictReader(open(f"{work}/rayleigh/reference_rayleigh.csv"))]
 print("| v/c | mesh | contact time FE | vs 1-DOF | vs feedback | "
       "delta_max FE | vs 1-DOF | vs feedback | epsilon FE | feedback "
@@ -34,7 +36,7 @@ for v in velocities:
     ref = rows[-1]
     eps = [r["epsilon_feedback"] for r in rows]
     for mesh in ("coarse", "fine"):
-        s = {k: float(x) for k, x in
+        s = {k: number(x) for k, x in
              next(csv.DictReader(open(f"{work}/{mesh}_{v}/summary.csv"))).items()}
         rel = lambda a, b: f"{100 * (a / b - 1):+.2f} %"
         print(f"| {v} | {'3 ref., 12 el.' if mesh == 'coarse' else '4 ref., 24 el.'}"

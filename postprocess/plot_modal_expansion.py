@@ -30,7 +30,8 @@ GERL_ZIPPELIUS_FIG_1 = [(0.9, 0.3, 0.65)]  # (nu2, v/c, epsilon) readable from F
 def read(path):
     """The rows of a CSV file, numbers as floats; the potential's stiffness
     as "s" (column potential_stiffness, or alpha in older tables)."""
-    rows = [{k: float(v) if k != "limit" else v for k, v in r.items()}
+    rows = [{k: (float(v) if v else math.nan) if k != "limit" else v
+             for k, v in r.items()}
             for r in csv.DictReader(open(path))]
     for r in rows:
         r["s"] = r.get("potential_stiffness", r.get("alpha"))
@@ -61,8 +62,8 @@ for path in a.fe:
     rows = list(csv.DictReader(open(path)))
     for nu2 in sorted({float(r["poisson_ratio_2d"]) for r in rows}):
         sel = sorted((float(r["velocity"]), float(r["epsilon"]),
-                      float(r["epsilon_error"])) for r in rows
-                     if close(float(r["poisson_ratio_2d"]), nu2))
+                      float(r["epsilon_error"] or 0.0)) for r in rows
+                     if close(float(r["poisson_ratio_2d"]), nu2) and r["epsilon"])
         v, eps, err = zip(*sel)
         ax.errorbar(v, eps, yerr=err, fmt="s--", capsize=3, ms=4,
                     label=f"FE penalty, nu2 = {nu2:g}")

@@ -107,7 +107,7 @@ namespace DiskImpact
                       "graded mesh, and that the results are compared with). "
                       "Disk: C of the log "
                       "law, 'exact' for the centre-of-mass law C = -2 ln 2 - "
-                      "(1 + nu2)/4, 'fit' for the earlier fit C = -1 - 2/pi "
+                      "(1 + nu2)/4, 'fit' for the fitted C = -1 - 2/pi "
                       "- nu2/4, or a number. Sphere: the finite-size constant "
                       "D of delta = delta_Hertz + D P / (E* R), 'exact' for "
                       "Hertz's law (D = 0), 'finite size' for the derived "
