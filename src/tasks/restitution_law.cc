@@ -472,7 +472,8 @@ namespace DiskImpact
                 << ", tau = "
                 << number(parameters.material.relaxation_time() *
                           (units.is_si() ? units.input_time() : 1.))
-                << ", largest residual " << number(theory_residual)
+                << (units.is_si() ? " s" : "") << ", largest residual "
+                << number(theory_residual)
                 << "\n  at v_ref = " << reference_speed
                 << ": epsilon = " << number(epsilon_ref) << '\n';
       if (!files.empty())
