@@ -2,8 +2,8 @@
 // and its impact on a rigid wall. See README.md.
 
 #include "base/input_error.h"
-#include "base/parameters.h"
 #include "base/run_error.h"
+#include "tasks/parameters.h"
 #include "tasks/task_runner.h"
 
 #include <deal.II/base/exceptions.h>

@@ -2,8 +2,6 @@
 
 #include "base/input_error.h"
 #include "base/parameter_lists.h"
-#include "body/geometry.h"
-#include "elasticity/material.h"
 
 #include <cmath>
 #include <iomanip>
@@ -85,51 +83,33 @@ namespace DiskImpact
   }
 
   void
-  UnitSystem::make_dimensionless(ParameterHandler &prm, const Task task)
+  UnitSystem::set_si_scales(const double radius,
+                            const double young_modulus,
+                            const double density,
+                            const double velocity_unit,
+                            const double force_unit,
+                            const bool   sphere)
   {
-    require(task == Task::impact || task == Task::impact_convergence ||
-              task == Task::sweep || task == Task::restitution_law,
-            "Units = SI is for the impact tasks ('impact', 'impact "
-            "convergence', 'sweep', 'restitution law'); this task takes "
-            "dimensionless input (set 'Units = dimensionless')");
-    prm.enter_subsection("Geometry");
-    require(prm.get("Mesh file").empty(),
-            "Units = SI takes the built-in meshes; a 'Mesh file' is in "
-            "units of R (set 'Units = dimensionless')");
-    prm.leave_subsection();
-    prm.enter_subsection("Impact");
-    require(prm.get("Poisson ratios").empty(),
-            "Units = SI: 'Poisson ratios' is a dimensionless study (the "
-            "speed unit c changes with nu); give one 'Poisson ratio' in "
-            "subsection Material");
-    prm.leave_subsection();
+    require_in_range("Radius", radius, 1e-9, 1e3, "m");
+    require_in_range("Young modulus", young_modulus, 1e3, 1e13, "Pa");
+    require_in_range("Density", density, 10., 1e5, "kg/m^3");
+    length_scale = radius;
+    young_si     = young_modulus;
+    density_si   = density;
+    speed_scale  = velocity_unit;
+    time_scale   = radius / velocity_unit;
+    force_scale  = force_unit;
+    // The unit of time of the run's inputs, R sqrt(rho/E): 1 with
+    // E = rho = R = 1.
+    input_time_scale = radius * std::sqrt(density / young_modulus);
+    force_unit_name  = sphere ? "N" : "N/m";
+    si               = true;
+  }
 
-    BodyGeometry geometry;
-    geometry.parse_parameters(prm);
-    Material material;
-    material.parse_parameters(prm);
-    if (geometry.is_axisymmetric() && !material.plane_model_given())
-      material.make_axisymmetric();
-    const double R   = geometry.radius();
-    const double E   = material.young_modulus();
-    const double rho = material.density();
-    require_in_range("Radius", R, 1e-9, 1e3, "m");
-    require_in_range("Young modulus", E, 1e3, 1e13, "Pa");
-    require_in_range("Density", rho, 10., 1e5, "kg/m^3");
-
-    // The run's own unit of time, R sqrt(rho/E) (with E = rho = R = 1 it
-    // is 1), and the units of its results.
-    const double own_time = R * std::sqrt(rho / E);
-    speed_scale           = material.velocity_unit();
-    length_scale          = R;
-    time_scale            = R / speed_scale;
-    force_scale           = material.in_plane_young_modulus() * R *
-                  (geometry.is_axisymmetric() ? R : 1.);
-    force_unit_name  = geometry.is_axisymmetric() ? "N" : "N/m";
-    density_si       = rho;
-    input_time_scale = own_time;
-    young_si         = E;
-
+  void
+  UnitSystem::make_dimensionless(ParameterHandler &prm) const
+  {
+    const double own_time = input_time_scale;
     prm.enter_subsection("Geometry");
     prm.set("Radius", "1");
     prm.leave_subsection();
@@ -138,15 +118,14 @@ namespace DiskImpact
     prm.set("Density", "1");
     prm.leave_subsection();
     divide(prm, "Material", "Relaxation time", own_time);
-    divide(prm, "Material", "Shear viscosity", E * own_time);
-    divide(prm, "Material", "Bulk viscosity", E * own_time);
-    divide(prm, "Contact", "Wall point", R);
+    divide(prm, "Material", "Shear viscosity", young_si * own_time);
+    divide(prm, "Material", "Bulk viscosity", young_si * own_time);
+    divide(prm, "Contact", "Wall point", length_scale);
     divide(prm, "Time stepping", "Time step", own_time);
     divide(prm, "Impact", "Velocity", speed_scale);
     divide(prm, "Impact", "Velocities", speed_scale);
     divide(prm, "Impact", "Relaxation times", own_time);
     divide(prm, "Restitution law", "Reference speed", speed_scale);
-    si = true;
   }
 
   double

@@ -1,7 +1,5 @@
 #pragma once
 
-#include "base/run_parameters.h"
-
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/parameter_handler.h>
 
@@ -45,12 +43,28 @@ namespace DiskImpact
     is_si() const;
 
     /**
-     * SI only: check the SI entries of @p prm for task @p task (physical
-     * ranges, entries without an SI meaning), record the scales and set the
-     * equivalent dimensionless values in @p prm. Throws an InputError.
+     * Make this an SI run with the scales of its body: radius @p radius
+     * [m], Young modulus @p young_modulus [Pa], density @p density
+     * [kg/m^3], velocity unit c = @p velocity_unit [m/s] and force unit
+     * @p force_unit [N for a sphere, N/m for a disk]. Throws an InputError
+     * for values that look dimensionless (R, E or rho far from a real
+     * particle's).
      */
     void
-    make_dimensionless(dealii::ParameterHandler &prm, Task task);
+    set_si_scales(double radius,
+                  double young_modulus,
+                  double density,
+                  double velocity_unit,
+                  double force_unit,
+                  bool   sphere);
+
+    /**
+     * SI only: set the dimensionless values of the SI entries of @p prm:
+     * R = E = rho = 1, speeds in units of c, times in units of
+     * R sqrt(rho/E), the wall point in units of R.
+     */
+    void
+    make_dimensionless(dealii::ParameterHandler &prm) const;
 
     /// SI values of the dimensionless units (SI only): R [m], R/c [s],
     /// c [m/s], the force unit [N for a sphere, N/m for a disk].

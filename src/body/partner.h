@@ -1,6 +1,6 @@
 #pragma once
 
-#include "elasticity/material.h"
+#include "material/material.h"
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>

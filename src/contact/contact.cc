@@ -33,118 +33,46 @@ namespace DiskImpact
     return (x - point) * normal;
   }
 
-  namespace
+  ContactParameters::ContactParameters()
+      : parsed_law(ContactLaws::create("penalty"))
   {
-    /// p_c / E2 of the exponential law: below it the pressure is dropped.
-    constexpr double exponential_cut = 1e-16;
-
-    /// phi(x) = (1 - e^{-x}) / x and phi'(x), accurate near x = 0.
-    std::pair<double, double>
-    relative_secant(const double x)
-    {
-      if (std::abs(x) < 1e-3)
-        return {1. - x / 2. + x * x / 6. - x * x * x / 24.,
-                -0.5 + x / 3. - x * x / 8. + x * x * x / 30.};
-      const double e = std::exp(-x);
-      return {-std::expm1(-x) / x, ((1. + x) * e - 1.) / (x * x)};
-    }
-  } // namespace
-
-  double
-  WallLaw::pressure(const double gap) const
-  {
-    if (!(gap < 0.) || kind == WallLawKind::constraint)
-      return 0.;
-    return kind == WallLawKind::penalty ? -stiffness * gap :
-                                          threshold * std::exp(-decay * gap);
   }
 
-  double
-  WallLaw::pressure_derivative(const double gap) const
+  ContactParameters::ContactParameters(const ContactParameters &other)
+      : name(other.name)
+      , parsed_law(other.parsed_law->clone())
+      , rigid_wall(other.rigid_wall)
   {
-    if (!(gap < 0.) || kind == WallLawKind::constraint)
-      return 0.;
-    return kind == WallLawKind::penalty ? -stiffness : -decay * pressure(gap);
   }
 
-  double
-  WallLaw::energy(const double gap) const
+  ContactParameters &
+  ContactParameters::operator=(const ContactParameters &other)
   {
-    if (!(gap < 0.) || kind == WallLawKind::constraint)
-      return 0.;
-    return kind == WallLawKind::penalty ?
-             0.5 * stiffness * gap * gap :
-             threshold / decay * std::expm1(-decay * gap);
-  }
-
-  double
-  WallLaw::reach() const
-  {
-    return kind == WallLawKind::exponential ?
-             -std::log(exponential_cut) / decay :
-             0.;
-  }
-
-  double
-  WallLaw::discrete_gradient_pressure(const double g0, const double g1) const
-  {
-    const double dg = g1 - g0;
-    // Both in the exponential's range: p(g0) phi(lambda dg) without
-    // cancellation.
-    if (kind == WallLawKind::exponential && g0 < 0. && g1 < 0.)
-      return pressure(g0) * relative_secant(decay * dg).first;
-    // Below this the quotient loses digits; the penalty energy is
-    // quadratic, so the midpoint pressure is then exact to rounding.
-    if (std::abs(dg) <= 1e-10 * (std::abs(g0) + std::abs(g1)))
-      return pressure(0.5 * (g0 + g1));
-    return -(energy(g1) - energy(g0)) / dg;
-  }
-
-  double
-  WallLaw::discrete_gradient_derivative(const double g0, const double g1) const
-  {
-    const double dg = g1 - g0;
-    if (kind == WallLawKind::exponential && g0 < 0. && g1 < 0.)
-      return pressure(g0) * decay * relative_secant(decay * dg).second;
-    if (std::abs(dg) <= 1e-10 * (std::abs(g0) + std::abs(g1)))
-      return 0.5 * pressure_derivative(0.5 * (g0 + g1));
-    // d/dg1 of -(E(g1) - E(g0)) / (g1 - g0), with E'(g) = -p(g)
-    return (pressure(g1) * dg + (energy(g1) - energy(g0))) / (dg * dg);
+    name       = other.name;
+    parsed_law = other.parsed_law->clone();
+    rigid_wall = other.rigid_wall;
+    return *this;
   }
 
   void
   ContactParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Contact");
-    prm.declare_entry("Penalty factor",
-                      "100",
-                      Patterns::Double(),
-                      "Dimensionless penalty factor kappa > 0: the wall's "
-                      "penalty stiffness is k = kappa E2 / h_contact [force / "
-                      "length^3], with h_contact the length of the smallest "
-                      "edge face at the contact point. The penalty error "
-                      "(penetration) is proportional to 1 / kappa.");
+    std::string names, laws;
+    for (const auto &law : ContactLaws::all())
+      {
+        names += law.name + "|";
+        laws += "'" + law.name + "', " + law.description + "; ";
+        law.declare_parameters(prm);
+      }
     prm.declare_entry(
       "Law",
       "penalty",
-      Patterns::Selection("penalty|exponential|constraint"),
-      "The wall's pressure p on an edge point with gap g: "
-      "'penalty', p = k <-g>; 'exponential', the smooth wall "
-      "potential of Gerl & Zippelius 1999 (eq. 41), energy (E2 R / s) "
-      "exp(s x / R) per unit edge length, s the 'Potential stiffness' "
-      "and x the distance "
-      "of the point beyond the wall plane, cut where the "
-      "pressure falls below 1e-16 E2 (the disk starts that "
-      "far from the wall, 36.8 R / s); 'constraint', no "
-      "penetration at the edge nodes (g >= 0 exactly, the "
-      "pressure a Lagrange multiplier; the contact zone's "
-      "edge carries no mass, docs/theory/impact-method.md).");
-    prm.declare_entry("Potential stiffness",
-                      "100",
-                      Patterns::Double(),
-                      "Law 'exponential': the stiffness s > 0 of the "
-                      "potential [-] (Gerl & Zippelius' alpha; hard contact "
-                      "as s -> infinity).");
+      Patterns::Selection(names + "constraint"),
+      "The wall's pressure p on an edge point with gap g: " + laws +
+        "'constraint', no penetration at the edge nodes (g >= 0 exactly, the "
+        "pressure a Lagrange multiplier; the contact zone's edge carries no "
+        "mass, docs/theory/impact-method.md).");
     prm.declare_entry("Wall point",
                       "0, 0",
                       Patterns::List(Patterns::Double(), 2, 2),
@@ -163,38 +91,22 @@ namespace DiskImpact
   ContactParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Contact");
-    kappa                      = prm.get_double("Penalty factor");
-    const std::string law_name = prm.get("Law");
-    kind  = law_name == "exponential" ? WallLawKind::exponential :
-            law_name == "constraint"  ? WallLawKind::constraint :
-                                        WallLawKind::penalty;
-    alpha = prm.get_double("Potential stiffness");
+    name = prm.get("Law");
+    // Every law's entries are checked, the chosen one's are kept.
+    for (const auto &law : ContactLaws::all())
+      {
+        auto parsed = law.create();
+        parsed->parse_parameters(prm);
+        if (law.name == name)
+          parsed_law = std::move(parsed);
+      }
     rigid_wall.point =
       Point<2>(parse_vector(prm.get("Wall point"), "Wall point"));
     const Tensor<1, 2> normal =
       parse_vector(prm.get("Wall normal"), "Wall normal");
     prm.leave_subsection();
-
-    require(kappa > 0.,
-            "Contact: 'Penalty factor' must be positive, got " +
-              Utilities::to_string(kappa));
-    require(alpha > 0.,
-            "Contact: 'Potential stiffness' must be positive, got " +
-              Utilities::to_string(alpha));
     require(normal.norm() > 0., "Contact: 'Wall normal' must not be zero");
     rigid_wall.normal = normal / normal.norm();
-  }
-
-  double
-  ContactParameters::penalty_factor() const
-  {
-    return kappa;
-  }
-
-  void
-  ContactParameters::set_penalty_factor(const double k)
-  {
-    kappa = k;
   }
 
   const RigidWall &
@@ -203,35 +115,44 @@ namespace DiskImpact
     return rigid_wall;
   }
 
-  WallLaw
-  ContactParameters::penalty_law(const double in_plane_young_modulus,
-                                 const double h_contact) const
+  const std::string &
+  ContactParameters::law_name() const
   {
-    WallLaw law;
-    law.stiffness = kappa * in_plane_young_modulus / h_contact;
+    return name;
+  }
+
+  bool
+  ContactParameters::exact_constraint() const
+  {
+    return name == "constraint";
+  }
+
+  std::shared_ptr<const ContactLaw>
+  ContactParameters::law(const ContactScales &scales) const
+  {
+    if (exact_constraint())
+      return nullptr;
+    std::shared_ptr<ContactLaw> law = parsed_law->clone();
+    law->set_scales(scales);
     return law;
   }
 
-  WallLawKind
-  ContactParameters::law_kind() const
+  const ContactLaw &
+  ContactParameters::parsed() const
   {
-    return kind;
+    return *parsed_law;
   }
 
-  WallLaw
-  ContactParameters::wall_law(const double in_plane_young_modulus,
-                              const double h_contact,
-                              const double radius) const
+  void
+  ContactParameters::stiffen_law(const double factor)
   {
-    if (kind == WallLawKind::penalty)
-      return penalty_law(in_plane_young_modulus, h_contact);
-    WallLaw law;
-    law.kind = kind;
-    if (kind == WallLawKind::constraint)
-      return law;
-    law.decay     = alpha / radius;
-    law.threshold = exponential_cut * in_plane_young_modulus;
-    return law;
+    parsed_law->stiffen(factor);
+  }
+
+  bool
+  ContactParameters::approximates_hard_contact() const
+  {
+    return exact_constraint() || parsed_law->approximates_hard_contact();
   }
 
   void

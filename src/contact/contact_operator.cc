@@ -26,13 +26,13 @@ namespace DiskImpact
     return std::sqrt((axisymmetric ? 2.5 : 4.) * second_moment / force);
   }
 
-  ContactOperator::ContactOperator(const ElasticityOperator &op,
-                                   const RigidWall          &wall,
-                                   const WallLaw            &law,
-                                   const Point<2>           &disk_center)
+  ContactOperator::ContactOperator(const ElasticityOperator         &op,
+                                   const RigidWall                  &wall,
+                                   std::shared_ptr<const ContactLaw> law,
+                                   const Point<2> &disk_center)
       : op(op)
       , wall(wall)
-      , law(law)
+      , law(std::move(law))
       , origin(disk_center - wall.gap(disk_center) * wall.normal)
       , tangent_direction({-wall.normal[1], wall.normal[0]})
   {
@@ -78,7 +78,7 @@ namespace DiskImpact
             if (gap >= 0.)
               continue;
             in_contact      = true;
-            const double p  = law.pressure(gap);
+            const double p  = law->pressure(gap);
             const double ds = face_values.JxW(q) *
                               section.measure(face_values.quadrature_point(q));
             // Hertz's coordinate: along the undeformed edge (the
@@ -86,7 +86,7 @@ namespace DiskImpact
             const double t =
               (face_values.quadrature_point(q) - origin) * tangent_direction;
             state.force += p * ds;
-            state.energy += law.energy(gap) * ds;
+            state.energy += law->energy(gap) * ds;
             state.second_moment += p * t * t * ds;
             state.max_penetration = std::max(state.max_penetration, -gap);
             for (unsigned int i = 0; i < dofs_per_cell; ++i)
@@ -96,7 +96,7 @@ namespace DiskImpact
                 cell_residual(i) -= p * phi_n[i] * ds;
                 for (unsigned int j = 0; j < dofs_per_cell; ++j)
                   cell_tangent(i, j) -=
-                    law.pressure_derivative(gap) * phi_n[i] * phi_n[j] * ds;
+                    law->pressure_derivative(gap) * phi_n[i] * phi_n[j] * ds;
               }
           }
         if (!in_contact)
@@ -140,7 +140,7 @@ namespace DiskImpact
         for (const unsigned int q : face_values.quadrature_point_indices())
           {
             const Point<2> x = face_values.quadrature_point(q) + u[q];
-            const double   p = law.pressure(wall.gap(x));
+            const double   p = law->pressure(wall.gap(x));
             if (p > 0.)
               samples.emplace_back((face_values.quadrature_point(q) - origin) *
                                      tangent_direction,

@@ -39,19 +39,19 @@ namespace DiskImpact
   };
 
   /**
-   * The contact (WallLaw) of the disk's curved edge with a rigid wall, on the
-   * quadrature points of the edge faces: the residual contribution
-   * -int p (n . v) ds and its consistent tangent -int p'(g) (n . u)(n . v) ds
-   * (p' = -k H(-g) for the penalty, H the Heaviside function), for small
-   * strains (reference edge, current gap).
+   * The contact (a ContactLaw) of the disk's curved edge with a rigid wall, on
+   * the quadrature points of the edge faces: the residual contribution -int p
+   * (n . v) ds and its consistent tangent -int p'(g) (n . u)(n . v) ds (p' = -k
+   * H(-g) for the penalty, H the Heaviside function), for small strains
+   * (reference edge, current gap).
    */
   class ContactOperator
   {
   public:
-    ContactOperator(const ElasticityOperator &op,
-                    const RigidWall          &wall,
-                    const WallLaw            &law,
-                    const dealii::Point<2>   &disk_center);
+    ContactOperator(const ElasticityOperator         &op,
+                    const RigidWall                  &wall,
+                    std::shared_ptr<const ContactLaw> law,
+                    const dealii::Point<2>           &disk_center);
 
     /**
      * Add the contact terms at the displacement @p ghosted_u to @p residual
@@ -72,9 +72,9 @@ namespace DiskImpact
     smallest_edge_face(const ElasticityOperator &op);
 
   private:
-    const ElasticityOperator &op;
-    RigidWall                 wall;
-    WallLaw                   law;
+    const ElasticityOperator         &op;
+    RigidWall                         wall;
+    std::shared_ptr<const ContactLaw> law;
     /// Where t = 0: the point of the wall nearest the disk's centre.
     dealii::Point<2>     origin;
     dealii::Tensor<1, 2> tangent_direction;

@@ -23,13 +23,13 @@ namespace DiskImpact
 {
   using namespace dealii;
 
-  ContactZone::ContactZone(const ElasticityOperator &op,
-                           const RigidWall          &wall,
-                           const WallLaw            &law,
-                           const dealii::Point<2>   &disk_center,
-                           const double              gap_bound,
-                           const bool                with_partner)
-      : law(law)
+  ContactZone::ContactZone(const ElasticityOperator         &op,
+                           const RigidWall                  &wall,
+                           std::shared_ptr<const ContactLaw> law,
+                           const dealii::Point<2>           &disk_center,
+                           const double                      gap_bound,
+                           const bool                        with_partner)
+      : law(std::move(law))
       , bound(gap_bound)
       , axisymmetric(op.get_section().is_axisymmetric())
   {
@@ -39,7 +39,7 @@ namespace DiskImpact
     // More points than the element needs for a law: the pressure has a
     // kink where contact ends inside a face. The constraint acts at the
     // edge nodes, each with its share of the edge.
-    const bool          nodal = law.kind == WallLawKind::constraint;
+    const bool          nodal = !this->law;
     const QGauss<1>     gauss(fe.degree + 3);
     const Quadrature<1> quadrature =
       nodal ? Quadrature<1>(fe.base_element(0).get_unit_face_support_points()) :
@@ -62,7 +62,8 @@ namespace DiskImpact
     const Tensor<1, 2> along({-wall.normal[1], wall.normal[0]});
 
     // This rank's candidates, flattened for the exchange: ds, g0, t, x, y,
-    // the number of entries, then (DoF, b) pairs.
+    // the number of entries, then (DoF, b) pairs; the same for the
+    // tangential row.
     std::vector<double> local;
     for_each_curved_edge_face(
       dof_handler, [&](const auto &cell, const unsigned int f) {
@@ -91,12 +92,16 @@ namespace DiskImpact
                     op.get_section().measure(face_values.quadrature_point(q));
         for (const unsigned int q : face_values.quadrature_point_indices())
           {
-            ConstrainedRow row;
+            ConstrainedRow row, tangential;
             for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-              add_to_row(constraints,
-                         dof_indices[i],
-                         face_values[displacement].value(i, q) * wall.normal,
-                         row);
+              {
+                const auto phi = face_values[displacement].value(i, q);
+                add_to_row(constraints, dof_indices[i], phi * wall.normal, row);
+                add_to_row(constraints,
+                           dof_indices[i],
+                           phi * along,
+                           tangential);
+              }
             local.insert(local.end(),
                          {ds[q],
                           wall.gap(x[q]),
@@ -105,6 +110,9 @@ namespace DiskImpact
                           x[q][1],
                           static_cast<double>(row.size())});
             for (const auto &[dof, b] : row)
+              local.insert(local.end(), {static_cast<double>(dof), b});
+            local.push_back(static_cast<double>(tangential.size()));
+            for (const auto &[dof, b] : tangential)
               local.insert(local.end(), {static_cast<double>(dof), b});
           }
       });
@@ -115,19 +123,27 @@ namespace DiskImpact
       double                                                  ds, gap0, t;
       dealii::Point<2>                                        x;
       std::vector<std::pair<types::global_dof_index, double>> row;
+      std::vector<std::pair<types::global_dof_index, double>> tangential;
     };
     std::vector<Candidate> candidates;
     for (const auto &part :
          Utilities::MPI::all_gather(dof_handler.get_communicator(), local))
       for (std::size_t k = 0; k < part.size();)
         {
-          Candidate candidate{
-            part[k], part[k + 1], part[k + 2], {part[k + 3], part[k + 4]}, {}};
-          const auto n_entries = static_cast<std::size_t>(part[k + 5]);
-          k += 6;
-          for (std::size_t e = 0; e < n_entries; ++e, k += 2)
-            candidate.row.emplace_back(
-              static_cast<types::global_dof_index>(part[k]), part[k + 1]);
+          Candidate candidate{part[k],
+                              part[k + 1],
+                              part[k + 2],
+                              {part[k + 3], part[k + 4]},
+                              {},
+                              {}};
+          k += 5;
+          for (auto *row : {&candidate.row, &candidate.tangential})
+            {
+              const auto n_entries = static_cast<std::size_t>(part[k++]);
+              for (std::size_t e = 0; e < n_entries; ++e, k += 2)
+                row->emplace_back(static_cast<types::global_dof_index>(part[k]),
+                                  part[k + 1]);
+            }
           candidates.push_back(std::move(candidate));
         }
     // A vertex shared by two faces is one node: one point, both shares.
@@ -179,7 +195,13 @@ namespace DiskImpact
     dofs.assign(all_dofs.begin(), all_dofs.end());
     for (const auto &candidate : candidates)
       {
-        Point point{candidate.ds, candidate.gap0, candidate.t, {}, {}};
+        Point point{candidate.ds,
+                    candidate.gap0,
+                    candidate.t,
+                    {},
+                    {},
+                    candidate.tangential,
+                    {}};
         for (const auto &[dof, b] : candidate.row)
           point.row.emplace_back(
             std::lower_bound(dofs.begin(), dofs.end(), dof) - dofs.begin(), b);
@@ -203,10 +225,16 @@ namespace DiskImpact
     return g;
   }
 
+  double
+  ContactZone::reach() const
+  {
+    return law ? law->reach() : 0.;
+  }
+
   void
   ContactZone::check_reach(const Point &point) const
   {
-    if (point.gap0 > law.reach() + 0.5 * (bound - law.reach()))
+    if (point.gap0 > reach() + 0.5 * (bound - reach()))
       throw RunError("the contact reaches edge points whose undeformed "
                      "gap is " +
                      approximately(point.gap0) +
@@ -323,19 +351,19 @@ namespace DiskImpact
         double p_bar, dp_bar;
         if (average == ContactAverage::discrete_gradient)
           {
-            p_bar  = law.discrete_gradient_pressure(g0, g1);
-            dp_bar = law.discrete_gradient_derivative(g0, g1);
+            p_bar  = law->discrete_gradient_pressure(g0, g1);
+            dp_bar = law->discrete_gradient_derivative(g0, g1);
           }
         else
           {
-            p_bar = (1. - new_weight) * law.pressure(g0) +
-                    new_weight * law.pressure(g1);
-            dp_bar = new_weight * law.pressure_derivative(g1);
+            p_bar = (1. - new_weight) * law->pressure(g0) +
+                    new_weight * law->pressure(g1);
+            dp_bar = new_weight * law->pressure_derivative(g1);
           }
-        const double p1 = law.pressure(g1);
+        const double p1 = law->pressure(g1);
         state.force += p1 * point.ds;
         state.force_average += p_bar * point.ds;
-        state.energy += law.energy(g1) * point.ds;
+        state.energy += law->energy(g1) * point.ds;
         state.second_moment += p1 * point.t * point.t * point.ds;
         state.max_penetration = std::max(state.max_penetration, -g1);
         for (const auto &[i, b] : point.active_row)
@@ -352,6 +380,24 @@ namespace DiskImpact
   ContactZone::n_points() const
   {
     return points.size();
+  }
+
+  double
+  ContactZone::coordinate_along_wall(const unsigned int i) const
+  {
+    return points[i].t;
+  }
+
+  const std::vector<std::pair<types::global_dof_index, double>> &
+  ContactZone::tangential_row(const unsigned int i) const
+  {
+    return points[i].tangential_row;
+  }
+
+  PointHistory &
+  ContactZone::history(const unsigned int i)
+  {
+    return points[i].history;
   }
 
   std::vector<std::vector<std::pair<unsigned int, double>>>

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "base/contact_average.h"
 #include "contact/contact.h"
 #include "contact/contact_operator.h"
 
@@ -9,12 +10,26 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <memory>
 #include <utility>
 #include <vector>
 
 namespace DiskImpact
 {
   class ElasticityOperator;
+
+  /**
+   * What a contact point carries from one step to the next: the state of a
+   * frictional contact (stick or slip, the tangential force and the slip so
+   * far). No normal law uses it; it is the place for a friction law's
+   * history.
+   */
+  struct PointHistory
+  {
+    bool   sticking         = false;
+    double tangential_force = 0.;
+    double slip             = 0.;
+  };
 
   /**
    * The wall contact reduced to the few degrees of freedom it can act on.
@@ -45,12 +60,13 @@ namespace DiskImpact
     /// @p gap_bound. With @p with_partner the gap is measured along the
     /// wall normal to a collision partner's edge (locate_on_partner_edge()),
     /// and the rows hold both bodies' DoFs. Collective.
-    ContactZone(const ElasticityOperator &op,
-                const RigidWall          &wall,
-                const WallLaw            &law,
-                const dealii::Point<2>   &disk_center,
-                double                    gap_bound,
-                bool                      with_partner = false);
+    /// @p law: null for the exact constraint.
+    ContactZone(const ElasticityOperator         &op,
+                const RigidWall                  &wall,
+                std::shared_ptr<const ContactLaw> law,
+                const dealii::Point<2>           &disk_center,
+                double                            gap_bound,
+                bool                              with_partner = false);
 
     /// D, the candidates' DoFs.
     const std::vector<dealii::types::global_dof_index> &
@@ -113,6 +129,16 @@ namespace DiskImpact
     /// The number of candidate points.
     unsigned int
     n_points() const;
+    /// Point @p i's undeformed coordinate along the wall, from the point of
+    /// the wall nearest the body's centre.
+    double
+    coordinate_along_wall(unsigned int i) const;
+    /// Point @p i's tangential row: (global DoF, b_t) with t . u = b_t . u.
+    const std::vector<std::pair<dealii::types::global_dof_index, double>> &
+    tangential_row(unsigned int i) const;
+    /// Point @p i's history, to read and to update after a step.
+    PointHistory &
+    history(unsigned int i);
     /// Each point's gap row b: (position in D, b).
     std::vector<std::vector<std::pair<unsigned int, double>>>
     point_rows() const;
@@ -164,18 +190,29 @@ namespace DiskImpact
       std::vector<std::pair<unsigned int, double>> row; ///< (position in D, b)
       /// (position in C, b) once all its DoFs are active, else empty.
       std::vector<std::pair<unsigned int, double>> active_row;
+      /// The tangential displacement t . u(x_q) = (global DoF, b_t) . u,
+      /// t the wall's tangent: the row of a frictional force (its DoFs
+      /// join D when a law uses it).
+      std::vector<std::pair<dealii::types::global_dof_index, double>>
+        tangential_row;
+      /// What the point carries from step to step.
+      PointHistory history;
     };
 
     /// g of @p point for the values @p u on D.
     static double
     gap(const Point &point, const dealii::Vector<double> &u);
+    /// The law's reach (0 for the exact constraint).
+    double
+    reach() const;
     /// The RunError for a touching point beyond the outer half of the
     /// candidates, if @p point is one.
     void
     check_reach(const Point &point) const;
 
-    WallLaw law;
-    double  bound;
+    /// The law (null: the exact constraint).
+    std::shared_ptr<const ContactLaw> law;
+    double                            bound;
     /// A sphere's (ContactState::axisymmetric).
     bool                                         axisymmetric = false;
     std::vector<dealii::types::global_dof_index> dofs;

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "contact/contact_operator.h"
+#include "base/contact_average.h"
 
 #include <deal.II/base/parameter_handler.h>
 

@@ -1,8 +1,8 @@
 #pragma once
 
 #include "elasticity/discrete_operator.h"
-#include "elasticity/material.h"
 #include "elasticity/section.h"
+#include "material/material.h"
 
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/parameter_handler.h>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "elasticity/material.h"
+#include "material/material.h"
 
 #include <deal.II/numerics/data_postprocessor.h>
 

@@ -1,7 +1,7 @@
 #include "elasticity/torsion_operator.h"
 
 #include "body/geometry.h"
-#include "elasticity/material.h"
+#include "material/material.h"
 
 #include <deal.II/base/quadrature_lib.h>
 

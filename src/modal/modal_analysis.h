@@ -2,7 +2,7 @@
 
 #include "body/geometry.h"
 #include "elasticity/elasticity_operator.h"
-#include "elasticity/material.h"
+#include "material/material.h"
 #include "modal/modal_solver.h"
 #include "modal/mode_labelling.h"
 

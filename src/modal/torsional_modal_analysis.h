@@ -1,8 +1,8 @@
 #pragma once
 
 #include "body/geometry.h"
-#include "elasticity/material.h"
 #include "elasticity/torsion_operator.h"
+#include "material/material.h"
 #include "modal/modal_analysis.h"
 #include "modal/modal_solver.h"
 

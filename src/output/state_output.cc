@@ -1,8 +1,8 @@
 #include "output/state_output.h"
 
 #include "elasticity/elasticity_operator.h"
-#include "elasticity/material.h"
 #include "elasticity/stress_postprocessor.h"
+#include "material/material.h"
 #include "output/revolved_view.h"
 #include "output/vtu_record.h"
 

@@ -2,10 +2,10 @@
 
 #include "base/input_error.h"
 #include "base/parameter_lists.h"
-#include "base/parameters.h"
 #include "base/renamed_entries.h"
 #include "body/geometry.h"
 #include "output/csv_table.h"
+#include "reference/collision_estimate.h"
 #include "reference/hertz_impact.h"
 #include "reference/log_contact_law.h"
 #include "reference/sphere_finite_size.h"
@@ -13,6 +13,7 @@
 #include "reference/viscoelastic_spheres.h"
 #include "reference/wall_contact_theory.h"
 #include "tasks/impact_simulation.h"
+#include "tasks/parameters.h"
 
 #include <deal.II/base/utilities.h>
 
@@ -344,77 +345,28 @@ namespace DiskImpact
       contact_radius / body.geometry.radius());
   }
 
+  void
+  Impact::check_time_step(const Parameters &parameters) const
+  {
+    parameters.time_integrator.check_time_step(
+      estimate_collision(parameters).contact_time);
+  }
+
   CollisionEstimate
   Impact::estimate_collision(const Parameters &parameters) const
   {
     if (parameters.partner.is_body())
       return estimate_pair_collision(parameters);
-    const auto  &material = parameters.material;
-    const double R        = parameters.geometry.radius();
-    const double E2       = material.in_plane_young_modulus();
-    const double c        = material.velocity_unit();
-    const double v0       = impact_velocity * c;
-    const double mass     = material.density() * parameters.geometry.volume();
-    const double C        = contact_law_constant_value(parameters);
-    const auto   theory =
-      Reference::wall_contact_theory(parameters.geometry.is_axisymmetric());
-    CollisionEstimate estimate;
-    try
-      {
-        const auto one_dof    = theory->elastic_impact(mass, v0, E2, R, C);
-        estimate.contact_time = one_dof.contact_time;
-        estimate.largest_load = one_dof.max_force / theory->force_unit(E2, R);
-        estimate.largest_compression  = one_dof.max_compression;
-        estimate.one_dof_contact_time = one_dof.contact_time * c / R;
-        estimate.one_dof_delta_max    = one_dof.max_compression / R;
-        // With Kelvin-Voigt viscosity: m xi'' + F + tau xi' F' = 0 (Schwager
-        // 2007, eq. 4, and Ramírez et al. 1999, eq. 5, with A = tau), ended
-        // when the force returns to zero.
-        const double tau = material.relaxation_time();
-        if (tau > 0.)
-          {
-            const auto viscous =
-              theory->viscous_impact(mass, v0, E2, R, C, tau);
-            estimate.one_dof_epsilon = viscous.epsilon;
-            // The same collision ended where the overlap returns to zero
-            // (the papers' criterion, admitting an attractive force).
-            estimate.one_dof_epsilon_overlap =
-              theory
-                ->viscous_impact(
-                  mass, v0, E2, R, C, tau, Reference::EndCriterion::overlap)
-                .epsilon;
-            // The same law while the contact grows, F(xi + tau xi') while
-            // it shrinks (a tension-free edge).
-            const auto law = theory->force_law(E2, R, C);
-            estimate.one_dof_epsilon_unloading =
-              Reference::collide(mass,
-                                 v0,
-                                 law,
-                                 Reference::kelvin_voigt_unloading_force(law,
-                                                                         tau),
-                                 Reference::EndCriterion::force,
-                                 1e-12)
-                .epsilon;
-            estimate.one_dof_contact_time = viscous.contact_time * c / R;
-            estimate.one_dof_delta_max    = viscous.max_overlap / R;
-          }
-      }
-    catch (const std::domain_error &)
-      {
-        // Beyond the disk's log law: no 1-DOF collision; the contact time
-        // and load of Gerl & Zippelius' eq. 61.
-        estimate.one_dof_contact_time      = std::nan("");
-        estimate.one_dof_delta_max         = std::nan("");
-        estimate.one_dof_epsilon           = std::nan("");
-        estimate.one_dof_epsilon_overlap   = std::nan("");
-        estimate.one_dof_epsilon_unloading = std::nan("");
-        const double speed                 = impact_velocity;
-        const double delta    = speed * R * std::sqrt(std::log(4. / speed));
-        estimate.contact_time = M_PI * delta / v0;
-        estimate.largest_compression = delta;
-        estimate.largest_load        = delta / (R * std::log(4. * R / delta));
-      }
-    return estimate;
+    const auto &material = parameters.material;
+    return Reference::estimate_wall_collision(
+      {parameters.geometry.is_axisymmetric(),
+       material.density() * parameters.geometry.volume(),
+       impact_velocity,
+       material.velocity_unit(),
+       material.in_plane_young_modulus(),
+       parameters.geometry.radius(),
+       contact_law_constant_value(parameters),
+       material.relaxation_time()});
   }
 
   std::pair<Reference::ContactBody, Reference::ContactBody>
@@ -438,114 +390,20 @@ namespace DiskImpact
   CollisionEstimate
   Impact::estimate_pair_collision(const Parameters &parameters) const
   {
-    // The relative motion of two bodies: the reduced mass on the pair's
-    // law (docs/theory/two-body-law.md), with each body's own constant.
-    const bool   sphere  = parameters.geometry.is_axisymmetric();
-    const auto  &partner = parameters.partner;
-    const double R       = parameters.geometry.radius();
-    const double c       = parameters.material.velocity_unit();
-    const double v0      = impact_velocity * c;
-    const double m1 =
-      parameters.material.density() * parameters.geometry.volume();
-    const double m2 =
-      partner.material().density() *
-      parameters.geometry.with_radius(partner.radius()).volume();
-    const auto [body, other]   = contact_bodies(parameters);
-    const double            mu = m1 * m2 / (m1 + m2); // the reduced mass
-    CollisionEstimate       estimate;
-    Reference::OneDofImpact one_dof;
-    bool                    within_law = true;
-    try
-      {
-        one_dof =
-          Reference::two_body_elastic_impact(sphere, mu, v0, body, other);
-        estimate.one_dof_contact_time = one_dof.contact_time * c / R;
-        estimate.one_dof_delta_max    = one_dof.max_compression / R;
-      }
-    catch (const std::domain_error &)
-      {
-        within_law = false;
-        // Beyond the pair's law: the wall's estimate (Gerl & Zippelius 1999,
-        // eq. 61) for the equivalent body (docs/theory/two-body-law.md) with
-        // the reduced mass, or Hertz's (D = 0) for spheres; no 1-DOF values.
-        const auto eq = Reference::equivalent_body(sphere, body, other);
-        if (sphere)
-          {
-            const auto hertz =
-              Reference::hertz_sphere_impact(mu, eq.modulus, eq.radius, v0);
-            one_dof.max_compression = hertz.max_overlap;
-            one_dof.max_force       = hertz.max_force;
-            one_dof.contact_time    = hertz.contact_time;
-          }
-        else
-          {
-            // delta = delta_0 sqrt(L), delta_0 = v sqrt(mu / (pi E_eff)),
-            // L = sum_i w_i 2 ln(4 R_i / a) at a^2 = 4 R_eff delta_0, and
-            // F = pi E_eff delta / L at a^2 = 4 R_eff delta: for one body on
-            // the wall eq. 61's delta = v R sqrt(ln(4 / v)) and its load;
-            // for identical bodies twice its delta at its force.
-            const auto log_sum = [&](const double a) {
-              double L = 0.;
-              for (const auto *b : {&body, &other})
-                if (std::isfinite(b->modulus))
-                  L +=
-                    eq.modulus / b->modulus * 2. * std::log(4. * b->radius / a);
-              return L;
-            };
-            const double delta_0 = v0 * std::sqrt(mu / (M_PI * eq.modulus));
-            one_dof.max_compression =
-              delta_0 * std::sqrt(log_sum(std::sqrt(4. * eq.radius * delta_0)));
-            one_dof.max_force =
-              M_PI * eq.modulus * one_dof.max_compression /
-              log_sum(std::sqrt(4. * eq.radius * one_dof.max_compression));
-            one_dof.contact_time = M_PI * one_dof.max_compression / v0;
-          }
-        estimate.one_dof_contact_time      = std::nan("");
-        estimate.one_dof_delta_max         = std::nan("");
-        estimate.one_dof_epsilon           = std::nan("");
-        estimate.one_dof_epsilon_overlap   = std::nan("");
-        estimate.one_dof_epsilon_unloading = std::nan("");
-      }
-    estimate.contact_time        = one_dof.contact_time;
-    estimate.largest_compression = one_dof.max_compression;
-    // The load of the body alone on a wall whose Hertz zone has the pair's
-    // half-width a at the largest force.
-    const double a =
-      Reference::two_body_half_width(sphere, one_dof.max_force, body, other);
-    estimate.largest_load =
-      sphere ? 4. * std::pow(a / R, 3) / (3. * M_PI) : a * a / (4. * R * R);
-    // Kelvin-Voigt with one relaxation time: the relative motion obeys
-    // mu delta'' + F + tau delta' F' = 0 (each body's viscous force is tau
-    // times the rate of its elastic force).
-    const double tau = parameters.material.relaxation_time();
-    if (tau > 0. || partner.material().relaxation_time() > 0.)
-      {
-        estimate.one_dof_epsilon           = std::nan("");
-        estimate.one_dof_epsilon_overlap   = std::nan("");
-        estimate.one_dof_epsilon_unloading = std::nan("");
-        if (within_law && tau == partner.material().relaxation_time())
-          {
-            const auto law = Reference::two_body_force_law(sphere, body, other);
-            const auto viscous = Reference::collide(
-              mu, v0, law, tau, Reference::EndCriterion::force);
-            estimate.one_dof_epsilon = viscous.epsilon;
-            estimate.one_dof_epsilon_overlap =
-              Reference::collide(
-                mu, v0, law, tau, Reference::EndCriterion::overlap)
-                .epsilon;
-            estimate.one_dof_epsilon_unloading =
-              Reference::collide(mu,
-                                 v0,
-                                 law,
-                                 Reference::kelvin_voigt_unloading_force(law,
-                                                                         tau),
-                                 Reference::EndCriterion::force)
-                .epsilon;
-            estimate.one_dof_contact_time = viscous.contact_time * c / R;
-            estimate.one_dof_delta_max    = viscous.max_overlap / R;
-          }
-      }
-    return estimate;
+    const auto &partner      = parameters.partner;
+    const auto [body, other] = contact_bodies(parameters);
+    return Reference::estimate_pair_collision(
+      {parameters.geometry.is_axisymmetric(),
+       parameters.material.density() * parameters.geometry.volume(),
+       partner.material().density() *
+         parameters.geometry.with_radius(partner.radius()).volume(),
+       impact_velocity,
+       parameters.material.velocity_unit(),
+       parameters.geometry.radius(),
+       body,
+       other,
+       parameters.material.relaxation_time(),
+       partner.material().relaxation_time()});
   }
 
   double

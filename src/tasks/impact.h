@@ -1,6 +1,7 @@
 #pragma once
 
 #include "body/geometry.h"
+#include "reference/collision_estimate.h"
 #include "reference/two_body_contact.h"
 
 #include <deal.II/base/parameter_handler.h>
@@ -59,21 +60,6 @@ namespace DiskImpact
     double momentum_error             = std::nan("");
   };
 
-  /// What the 1-DOF log-law model expects of a collision: the basis of the
-  /// time step and of the mesh near the contact.
-  struct CollisionEstimate
-  {
-    double contact_time            = 0.; ///< [time], for the time step
-    double largest_load            = 0.; ///< P / (pi E2 R) at the largest force
-    double largest_compression     = 0.; ///< centre-of-mass approach [length]
-    double one_dof_contact_time    = 0.; ///< [R / c]; NaN beyond the log law
-    double one_dof_delta_max       = 0.; ///< [R]; NaN beyond the log law
-    double one_dof_epsilon         = 1.; ///< with viscosity; NaN beyond it
-    double one_dof_epsilon_overlap = 1.; ///< ended at zero overlap
-    /// with the Kelvin-Voigt unloading law (kelvin_voigt_unloading_force())
-    double one_dof_epsilon_unloading = 1.;
-  };
-
   /**
    * Task 'impact': the disk, undeformed, moving toward the wall with speed
    * v (subsection Impact), touching it at t = 0. Implicit time integration
@@ -126,6 +112,10 @@ namespace DiskImpact
     /// range: Gerl & Zippelius' eq. 61 for the contact time and load).
     CollisionEstimate
     estimate_collision(const Parameters &parameters) const;
+    /// Throws an InputError unless a fixed 'Time step' suits the contact
+    /// time estimate_collision() expects (TimeIntegrator::check_time_step()).
+    void
+    check_time_step(const Parameters &parameters) const;
     /// estimate_collision() of two bodies (subsection Partner).
     CollisionEstimate
     estimate_pair_collision(const Parameters &parameters) const;
@@ -208,10 +198,27 @@ namespace DiskImpact
     {
       return revolved_view_angle;
     }
+    /// Steps between ParaView snapshots (0: none).
+    unsigned int
+    snapshot_interval() const
+    {
+      return output_interval;
+    }
+    /// 'Time after contact': the run goes on for this fraction of the
+    /// contact time after the contact has ended.
+    double
+    time_after_contact() const
+    {
+      return margin;
+    }
+    /// 'Number of projected modes' (0: no mode energies).
+    unsigned int
+    n_projected_modes() const
+    {
+      return projected_modes;
+    }
 
   private:
-    friend class ImpactSimulation;
-
     double              impact_velocity = 0.01;
     std::vector<double> sweep_velocities;
     std::vector<double> sweep_poisson_ratios;

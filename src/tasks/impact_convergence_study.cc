@@ -1,10 +1,12 @@
 #include "tasks/impact_convergence_study.h"
 
 #include "base/input_error.h"
-#include "base/parameters.h"
 #include "base/run_error.h"
 #include "output/csv_table.h"
 #include "tasks/impact_operators.h"
+#include "tasks/parameters.h"
+#include "tasks/run_checks.h"
+#include "tasks/task_registry.h"
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/utilities.h>
@@ -216,8 +218,7 @@ namespace DiskImpact
           parameters.geometry.global_refinements() + mesh_level);
         finer.impact = parameters.impact.with_mesh_refined(mesh_level);
         finer.finite_element.degree += degree_level;
-        finer.contact.set_penalty_factor(parameters.contact.penalty_factor() *
-                                         std::pow(2., degree_level));
+        finer.contact.stiffen_law(std::pow(2., degree_level));
         finer.time_integrator =
           parameters.time_integrator.with_time_step_scaled(
             std::pow(0.5, level));
@@ -233,8 +234,7 @@ namespace DiskImpact
       finer.time_integrator =
         parameters.time_integrator.with_time_step_scaled(std::pow(0.5, level));
     else
-      finer.contact.set_penalty_factor(parameters.contact.penalty_factor() *
-                                       std::pow(4., level));
+      finer.contact.stiffen_law(std::pow(4., level));
     return finer;
   }
 
@@ -704,4 +704,42 @@ namespace DiskImpact
           << " mesh levels)\n";
     pcout << out.str();
   }
+
+  namespace
+  {
+    TaskEntry
+    impact_convergence_task()
+    {
+      TaskEntry task;
+      task.name           = "impact convergence";
+      task.description    = "the impact on ever finer meshes, time steps and "
+                            "penalties, epsilon extrapolated with its error bar "
+                            "(impact_convergence.csv, epsilon_estimate.csv).";
+      task.traits.impacts = true;
+      task.traits.partner_body      = true;
+      task.traits.one_mesh_per_rank = true;
+      task.result_files = {"impact_convergence.csv", "epsilon_estimate.csv"};
+      task.run = [](const Parameters &parameters, bool, MPI_Comm communicator) {
+        run_impact_convergence(parameters, communicator);
+      };
+      task.check = [](const Parameters &parameters) {
+        parameters.impact.check_time_step(parameters);
+      };
+      task.build_largest_mesh = [](const Parameters &parameters,
+                                   Triangulation<2> &mesh,
+                                   const auto       &cell_budget) {
+        in_context("Impact convergence: the finest of 'Mesh levels'", [&]() {
+          // a degree level's budget is its own degree's
+          const Parameters finest =
+            parameters.impact_convergence.finest(parameters);
+          finest.impact.create_mesh(finest,
+                                    mesh,
+                                    cell_budget(finest.finite_element.degree));
+        });
+      };
+      return task;
+    }
+  } // namespace
+
+  DISKIMPACT_REGISTER_TASK(impact_convergence_task())
 } // namespace DiskImpact

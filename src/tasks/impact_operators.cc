@@ -1,7 +1,7 @@
 #include "tasks/impact_operators.h"
 
-#include "base/parameters.h"
 #include "contact/contact_operator.h"
+#include "tasks/parameters.h"
 
 #include <algorithm>
 #include <cmath>
@@ -25,21 +25,21 @@ namespace DiskImpact
     // Two bodies: the penalty k = kappa E / h with the pair's modulus
     // 1 / E = 1 / E2 + 1 / E2' (the wall's with identical bodies, whose gap
     // is twice the wall's).
-    law = parameters.contact.wall_law(impact.contact_modulus(parameters),
-                                      ContactOperator::smallest_edge_face(op),
-                                      R);
+    law = parameters.contact.law({impact.contact_modulus(parameters),
+                                  ContactOperator::smallest_edge_face(op),
+                                  R});
     // The candidates: edge points whose undeformed gap is below the law's
     // reach plus three times the largest approach the 1-DOF model expects
     // (or the Hertz zone's own gap a^2 / 2R, if larger).
     const auto estimate = impact.estimate_collision(parameters);
     candidate_bound =
-      law.reach() +
+      (law ? law->reach() : 0.) +
       3. * std::max(estimate.largest_compression,
                     largest_half_width * largest_half_width / (2. * R));
     // No inertia on the edge within the uniformly refined contact zone;
     // with the constraint, on all the candidates' faces (their undeformed
     // gap t^2 / 2R is below the bound).
-    if (law.kind == WallLawKind::constraint)
+    if (parameters.contact.exact_constraint())
       op.set_massless_edge_zone(geometry.contact_point(),
                                 1.5 * std::max(largest_half_width,
                                                std::sqrt(2. * R *

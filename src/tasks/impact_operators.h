@@ -5,7 +5,7 @@
 #include "elasticity/constraint_map.h"
 #include "elasticity/elasticity_operator.h"
 #include "elasticity/interleaved_mass.h"
-#include "elasticity/material.h"
+#include "material/material.h"
 
 #include <deal.II/distributed/tria.h>
 
@@ -46,8 +46,9 @@ namespace DiskImpact
     std::unique_ptr<ConstraintMap> constraint_map;
     /// The product with op's mass matrix, for the time loop.
     std::unique_ptr<InterleavedMass> mass_product;
-    /// The wall's law, its penalty from the smallest edge face.
-    WallLaw law;
+    /// The wall's law, scaled by the smallest edge face (null: the exact
+    /// constraint).
+    std::shared_ptr<const ContactLaw> law;
     /// The candidates for contact: the edge points whose undeformed gap is
     /// below this bound.
     double candidate_bound = 0.;

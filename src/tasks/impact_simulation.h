@@ -1,11 +1,9 @@
 #pragma once
 
-#include "body/body_motion.h"
 #include "contact/contact_operator.h"
 #include "contact/contact_zone.h"
-#include "dynamics/condensed_solver.h"
-#include "dynamics/massless_zone.h"
-#include "dynamics/state_vector.h"
+#include "dynamics/contact_stepper.h"
+#include "elasticity/body_motion.h"
 #include "elasticity/constraint_map.h"
 #include "elasticity/elasticity_operator.h"
 #include "modal/modal_projection.h"
@@ -59,25 +57,7 @@ namespace DiskImpact
     /// Undeformed, moving uniformly toward the wall.
     void
     set_initial_state();
-    /// Factorize the effective matrix cm M + (1 - af) K for the step dt.
-    void
-    factorize();
-    /// Newton's method for the step from (u, v, a); false if it fails.
-    bool
-    attempt_step();
-    /// attempt_step()'s contact for the law 'constraint': the end state's
-    /// point forces from the complementarity problem on the active points.
-    bool
-    attempt_constrained_step(const dealii::Vector<double> &y_D,
-                             dealii::Vector<double>       &u1_D,
-                             dealii::Vector<double>       &P);
-    /// For the end state @p u1_D: the exact mean of the point forces along
-    /// the step, less the trapezoidal mean, less the correction
-    /// @p applied so far (zero once below rounding).
-    dealii::Vector<double>
-    mean_force_correction(const dealii::Vector<double> &u1_D,
-                          const dealii::Vector<double> &applied) const;
-    /// Take one step, halving it (and refactorizing) after a Newton failure.
+    /// One step of the stepper; a RunError if it cannot be taken.
     void
     advance();
     /// Append the state after a step to the time series.
@@ -95,10 +75,6 @@ namespace DiskImpact
     /// Two bodies: each one's momentum balance and vibration energy.
     void
     finish_pair();
-    /// K u_new into stiffness_u, from the step's linear system where it
-    /// holds, else by a product.
-    void
-    update_stiffness_image();
     /// Throw a RunError if the result cannot be right: epsilon outside
     /// [0, 1], the energy balance of an energy-conserving scheme beyond its
     /// tolerance, contact time or delta_max beyond a factor 2 of the 1-DOF
@@ -130,8 +106,15 @@ namespace DiskImpact
     const Impact     &impact;
     MPI_Comm          communicator;
     const bool        with_outputs;
-    /// R, E2, c, v_i, the disk's mass, 2 on a half disk.
-    double R, E2, c, v0, mass, factor;
+    double            radius;           ///< R
+    double            in_plane_modulus; ///< E2 (E* of a sphere)
+    double            velocity_unit;    ///< c
+    double            impact_speed;     ///< v_i
+    double            body_mass;        ///< the whole body's mass
+    /// The whole body's loads over the computed domain's: 2 on a half
+    /// disk, 1 on a whole disk or a sphere (its meridian's integrals are
+    /// over the whole sphere).
+    double domain_factor;
     double force_unit; ///< E2 R (disk, per unit thickness) or E2 R^2
 
     ImpactSummary summary;
@@ -147,43 +130,23 @@ namespace DiskImpact
     /// Two bodies (a deformable partner): their centre-of-mass motion.
     std::unique_ptr<BodyMotion>      bodies;
     std::unique_ptr<ModalProjection> projection;
-    std::unique_ptr<CondensedSolver> solver;
+    std::unique_ptr<ContactStepper>  stepper;
 
-    StateVector                        u, v, a, u_new, v_new, a_new;
-    dealii::PETScWrappers::MPI::Vector along_normal, normal_momentum, b;
-    /// K u of the current state (advance()): for the strain energy and the
-    /// next step's right-hand side.
-    dealii::PETScWrappers::MPI::Vector stiffness_u;
-    /// The last step's contact force P on C (laws other than 'constraint').
-    dealii::Vector<double> contact_force;
-    /// M u, M v, M a (constrained entries zeroed) and their new values:
-    /// the Newmark relations are linear, so M v and M a follow from M u
-    /// by the same relations, one product with M per step.
-    StateVector mass_u, mass_v, mass_a, mass_u_new, mass_v_new, mass_a_new;
-    /// u on the contact candidates' DoFs, at the step's start and end.
-    dealii::Vector<double> u_D, u1_D_new;
-    /// Law 'constraint': the point forces at the step's start and end.
-    dealii::Vector<double> point_forces, point_forces_new;
-    /// With the energy-conserving scheme: the massless zone in equilibrium
-    /// and the points' static compliance, for the exact mean force.
-    std::unique_ptr<MasslessZone>                             massless;
-    std::vector<std::vector<std::pair<unsigned int, double>>> point_rows;
-    dealii::FullMatrix<double>                                static_compliance;
-    mutable dealii::PETScWrappers::MPI::Vector                work, product;
-    double                                                    normal_mass = 0.;
-    double energy_initial                                                 = 0.;
-    double v_com_initial                                                  = 0.;
+    /// The centre of mass's motion along the wall normal: the uniform field
+    /// n, its momentum functional M n and the mass n . M n.
+    dealii::PETScWrappers::MPI::Vector         along_normal, normal_momentum;
+    double                                     normal_mass = 0.;
+    mutable dealii::PETScWrappers::MPI::Vector work, product;
+    double                                     energy_initial = 0.;
+    double                                     v_com_initial  = 0.;
 
-    double dt = 0., t = 0.;
+    double dt      = 0.;
     double impulse = 0., energy_error = 0.;
     /// max (E(t) - E(0)) / E(0): no scheme may create energy.
     double energy_growth = 0.;
     /// Energy dissipated by the viscosity so far (whole disk).
     double       dissipated = 0.;
     ContactState state;
-    unsigned int cuts                  = 0;
-    unsigned int factorizations_before = 0, solves_before = 0;
-    double       solve_time_before = 0.;
     /// The end of contact (-1: not yet) and the last two positive step-mean
     /// forces with their mid-step times.
     double contact_end    = -1.;

@@ -1,7 +1,6 @@
-#include "tasks/impact_task.h"
-
-#include "base/parameters.h"
 #include "base/run_error.h"
+#include "tasks/parameters.h"
+#include "tasks/task_registry.h"
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/utilities.h>
@@ -13,64 +12,105 @@ namespace DiskImpact
 {
   using namespace dealii;
 
-  void
-  run_impact(const Parameters &parameters, MPI_Comm communicator)
+  namespace
   {
-    ConditionalOStream pcout(std::cout,
-                             Utilities::MPI::this_mpi_process(communicator) ==
-                               0);
-    pcout << "Impact at v = " << parameters.impact.velocity() << " c"
-          << std::endl;
-    const ImpactSummary s = parameters.impact.run(parameters, communicator);
-    on_root(communicator, [&]() {
-      Impact::write_summary(s,
-                            parameters.run.output_directory + "/summary.csv");
-    });
-    const bool         sphere = parameters.geometry.is_axisymmetric();
-    const std::string  model  = sphere ? "1-DOF Hertz" : "1-DOF log law";
-    std::ostringstream out;
-    out.precision(8);
-    out << "  DoFs " << s.n_dofs << ", time step " << s.time_step
-        << " R/c, steps " << s.steps << ", Newton iterations "
-        << s.newton_iterations << ", factorizations " << s.factorizations
-        << ", triangular solves " << s.triangular_solves << "\n"
-        << "  epsilon = " << s.epsilon << " (" << model << ": "
-        << s.one_dof_epsilon
-        << "; ended at zero overlap: " << s.one_dof_epsilon_overlap
-        << "; unloading law: " << s.one_dof_epsilon_unloading << ")\n"
-        << "  contact time = " << s.contact_time << " R/c (" << model << ": "
-        << s.one_dof_contact_time << ")\n"
-        << "  delta_max = " << s.delta_max << " R (" << model << ": "
-        << s.one_dof_delta_max << ")\n"
-        << "  force_max = " << s.force_max << (sphere ? " E* R^2" : " E2 R")
-        << "\n"
-        << (sphere ? "  Ramírez et al.'s u = (v / g*)^(1/5) = " :
-                     "  Schwager's alpha = tau sqrt(pi E2 / m) = ")
-        << (sphere ? s.ramirez_u : s.schwager_alpha) << "\n"
-        << "  energy error = " << s.energy_error
-        << ", impulse error = " << s.impulse_error << "\n"
-        << "  time stepping: " << s.wall_time_loop << " s, "
-        << s.wall_time_loop / s.steps * 1e3 << " ms per step = "
-        << s.wall_time_loop / s.steps / s.triangular_solve_time
-        << " solves with the factorized matrix (one: "
-        << s.triangular_solve_time * 1e3 << " ms); " << s.contact_dofs
-        << " contact DoFs condensed\n";
-    out << "  energy left in vibration: " << s.vibration_fraction << " of E(0)";
-    if (parameters.partner.is_body())
-      out << " (body), " << s.partner_vibration_fraction
-          << " (partner); momentum error " << s.momentum_error
-          << "\n  two bodies: v is the relative speed, epsilon = -(v1' - "
-             "v2') / (v1 - v2), delta_max the approach of the centres of "
-             "mass";
-    out << "\n";
-    const UnitSystem &units = parameters.units;
-    if (units.is_si())
-      out << "  in SI: v = " << parameters.impact.velocity() * units.speed()
-          << " m/s, epsilon = " << s.epsilon
-          << ", contact time = " << s.contact_time * units.time()
-          << " s, delta_max = " << s.delta_max * units.length()
-          << " m, force_max = " << s.force_max * units.force() << ' '
-          << units.force_name() << "\n";
-    pcout << out.str();
-  }
+    /// Task 'impact': one impact, its time series, summary and a printout.
+    void
+    run_impact(const Parameters &parameters, MPI_Comm communicator)
+    {
+      ConditionalOStream pcout(std::cout,
+                               Utilities::MPI::this_mpi_process(communicator) ==
+                                 0);
+      pcout << "Impact at v = " << parameters.impact.velocity() << " c"
+            << std::endl;
+      const ImpactSummary s = parameters.impact.run(parameters, communicator);
+      on_root(communicator, [&]() {
+        Impact::write_summary(s,
+                              parameters.run.output_directory + "/summary.csv");
+      });
+      const bool         sphere = parameters.geometry.is_axisymmetric();
+      const std::string  model  = sphere ? "1-DOF Hertz" : "1-DOF log law";
+      std::ostringstream out;
+      out.precision(8);
+      out << "  DoFs " << s.n_dofs << ", time step " << s.time_step
+          << " R/c, steps " << s.steps << ", Newton iterations "
+          << s.newton_iterations << ", factorizations " << s.factorizations
+          << ", triangular solves " << s.triangular_solves << "\n"
+          << "  epsilon = " << s.epsilon << " (" << model << ": "
+          << s.one_dof_epsilon
+          << "; ended at zero overlap: " << s.one_dof_epsilon_overlap
+          << "; unloading law: " << s.one_dof_epsilon_unloading << ")\n"
+          << "  contact time = " << s.contact_time << " R/c (" << model << ": "
+          << s.one_dof_contact_time << ")\n"
+          << "  delta_max = " << s.delta_max << " R (" << model << ": "
+          << s.one_dof_delta_max << ")\n"
+          << "  force_max = " << s.force_max << (sphere ? " E* R^2" : " E2 R")
+          << "\n"
+          << (sphere ? "  Ramírez et al.'s u = (v / g*)^(1/5) = " :
+                       "  Schwager's alpha = tau sqrt(pi E2 / m) = ")
+          << (sphere ? s.ramirez_u : s.schwager_alpha) << "\n"
+          << "  energy error = " << s.energy_error
+          << ", impulse error = " << s.impulse_error << "\n"
+          << "  time stepping: " << s.wall_time_loop << " s, "
+          << s.wall_time_loop / s.steps * 1e3 << " ms per step = "
+          << s.wall_time_loop / s.steps / s.triangular_solve_time
+          << " solves with the factorized matrix (one: "
+          << s.triangular_solve_time * 1e3 << " ms); " << s.contact_dofs
+          << " contact DoFs condensed\n";
+      out << "  energy left in vibration: " << s.vibration_fraction
+          << " of E(0)";
+      if (parameters.partner.is_body())
+        out << " (body), " << s.partner_vibration_fraction
+            << " (partner); momentum error " << s.momentum_error
+            << "\n  two bodies: v is the relative speed, epsilon = -(v1' - "
+               "v2') / (v1 - v2), delta_max the approach of the centres of "
+               "mass";
+      out << "\n";
+      const UnitSystem &units = parameters.units;
+      if (units.is_si())
+        out << "  in SI: v = " << parameters.impact.velocity() * units.speed()
+            << " m/s, epsilon = " << s.epsilon
+            << ", contact time = " << s.contact_time * units.time()
+            << " s, delta_max = " << s.delta_max * units.length()
+            << " m, force_max = " << s.force_max * units.force() << ' '
+            << units.force_name() << "\n";
+      pcout << out.str();
+    }
+  } // namespace
+
+  namespace
+  {
+    TaskEntry
+    impact_task()
+    {
+      TaskEntry task;
+      task.name        = "impact";
+      task.description = "the body hits the wall (or its partner) with speed "
+                         "v (impact.csv, summary.csv).";
+      task.traits.impacts      = true;
+      task.traits.partner_body = true;
+      task.result_files        = {"summary.csv",
+                                  "impact.csv",
+                                  "mode_energies.csv",
+                                  "impact.h5",
+                                  "impact.pvd",
+                                  "impact_*.vtu",
+                                  "impact_*.pvtu"};
+      task.run = [](const Parameters &parameters, bool, MPI_Comm communicator) {
+        run_impact(parameters, communicator);
+      };
+      task.check = [](const Parameters &parameters) {
+        parameters.impact.check_time_step(parameters);
+      };
+      task.build_largest_mesh = [](const Parameters &parameters,
+                                   Triangulation<2> &mesh,
+                                   const auto       &cell_budget) {
+        parameters.impact.create_mesh(
+          parameters, mesh, cell_budget(parameters.finite_element.degree));
+      };
+      return task;
+    }
+  } // namespace
+
+  DISKIMPACT_REGISTER_TASK(impact_task())
 } // namespace DiskImpact

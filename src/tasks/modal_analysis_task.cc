@@ -1,11 +1,11 @@
-#include "tasks/modal_analysis_task.h"
-
-#include "base/parameters.h"
 #include "base/run_error.h"
 #include "modal/modal_analysis.h"
 #include "modal/torsional_modal_analysis.h"
 #include "output/csv_table.h"
 #include "reference/sphere_torsional_modes.h"
+#include "tasks/parameters.h"
+#include "tasks/run_checks.h"
+#include "tasks/task_registry.h"
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
@@ -110,49 +110,86 @@ namespace DiskImpact
     }
   } // namespace
 
-  void
-  run_modal_analysis(const Parameters &parameters, MPI_Comm communicator)
+  namespace
   {
-    ConditionalOStream pcout(std::cout,
-                             Utilities::MPI::this_mpi_process(communicator) ==
-                               0);
-    // Rank 0's timing table, printed at the end of a run that succeeded
-    // (a timer without communicator prints nothing when an error unwinds).
-    TimerOutput   timer(pcout, TimerOutput::never, TimerOutput::wall_times);
-    ModalAnalysis analysis(parameters.geometry,
-                           parameters.material,
-                           parameters.finite_element.degree,
-                           parameters.modal_solver,
-                           communicator,
-                           timer);
-    pcout << "Mesh: " << analysis.n_cells() << " cells, " << analysis.n_dofs()
-          << " DoFs (Q" << parameters.finite_element.degree
-          << ", boundary mapping of degree " << parameters.finite_element.degree
-          << ")" << std::endl;
-
-    const auto modes = analysis.run(parameters.modal_solver.n_elastic_modes());
+    /**
+     * Task 'modal analysis': the lowest modes of the free disk, labelled and
+     * compared with the analytic Bessel modes. Writes modes.csv,
+     * analytic_modes.csv and the mode shapes (modes.pvd), prints the table.
+     */
+    void
+    run_modal_analysis(const Parameters &parameters, MPI_Comm communicator)
     {
-      TimerOutput::Scope scope(timer, "output");
-      const std::string &directory = parameters.run.output_directory;
-      analysis.write_mode_shapes(modes, directory);
-      on_root(communicator, [&]() {
-        ModalAnalysis::write_modes_csv(modes,
-                                       directory + "/modes.csv",
-                                       parameters.geometry.is_axisymmetric());
-      });
-    }
+      ConditionalOStream pcout(std::cout,
+                               Utilities::MPI::this_mpi_process(communicator) ==
+                                 0);
+      // Rank 0's timing table, printed at the end of a run that succeeded
+      // (a timer without communicator prints nothing when an error unwinds).
+      TimerOutput   timer(pcout, TimerOutput::never, TimerOutput::wall_times);
+      ModalAnalysis analysis(parameters.geometry,
+                             parameters.material,
+                             parameters.finite_element.degree,
+                             parameters.modal_solver,
+                             communicator,
+                             timer);
+      pcout << "Mesh: " << analysis.n_cells() << " cells, " << analysis.n_dofs()
+            << " DoFs (Q" << parameters.finite_element.degree
+            << ", boundary mapping of degree "
+            << parameters.finite_element.degree << ")" << std::endl;
 
-    ModalAnalysis::print_table(modes, pcout);
-    compare_with_analytic(modes,
-                          *analytic_free_modes(parameters.geometry,
-                                               parameters.material),
-                          parameters.geometry.is_half_disk(),
-                          parameters.run.output_directory +
-                            "/analytic_modes.csv",
-                          communicator,
-                          pcout);
-    if (parameters.modal_solver.n_torsional_modes() > 0)
-      run_torsional_modes(parameters, analysis, communicator, timer, pcout);
-    timer.print_summary();
-  }
+      const auto modes =
+        analysis.run(parameters.modal_solver.n_elastic_modes());
+      {
+        TimerOutput::Scope scope(timer, "output");
+        const std::string &directory = parameters.run.output_directory;
+        analysis.write_mode_shapes(modes, directory);
+        on_root(communicator, [&]() {
+          ModalAnalysis::write_modes_csv(modes,
+                                         directory + "/modes.csv",
+                                         parameters.geometry.is_axisymmetric());
+        });
+      }
+
+      ModalAnalysis::print_table(modes, pcout);
+      compare_with_analytic(modes,
+                            *analytic_free_modes(parameters.geometry,
+                                                 parameters.material),
+                            parameters.geometry.is_half_disk(),
+                            parameters.run.output_directory +
+                              "/analytic_modes.csv",
+                            communicator,
+                            pcout);
+      if (parameters.modal_solver.n_torsional_modes() > 0)
+        run_torsional_modes(parameters, analysis, communicator, timer, pcout);
+      timer.print_summary();
+    }
+  } // namespace
+
+  namespace
+  {
+    TaskEntry
+    modal_analysis_task()
+    {
+      TaskEntry task;
+      task.name         = "modal analysis";
+      task.description  = "the lowest modes of the free body compared with "
+                          "the analytic ones (modes.csv).";
+      task.traits.modal = true;
+      task.result_files = {"modes.csv",
+                           "analytic_modes.csv",
+                           "modes.pvd",
+                           "modes_*.vtu",
+                           "modes_*.pvtu"};
+      task.run = [](const Parameters &parameters, bool, MPI_Comm communicator) {
+        run_modal_analysis(parameters, communicator);
+      };
+      task.build_largest_mesh =
+        [](const Parameters &parameters, Triangulation<2> &, const auto &) {
+          check_mode_count(parameters, "Modal analysis: 'Number of modes'");
+        };
+      return task;
+    }
+  } // namespace
+
+  DISKIMPACT_REGISTER_TASK(modal_analysis_task())
 } // namespace DiskImpact

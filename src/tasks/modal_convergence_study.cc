@@ -2,10 +2,12 @@
 
 #include "base/input_error.h"
 #include "base/parameter_lists.h"
-#include "base/parameters.h"
 #include "base/run_error.h"
 #include "modal/modal_analysis.h"
 #include "output/csv_table.h"
+#include "tasks/parameters.h"
+#include "tasks/run_checks.h"
+#include "tasks/task_registry.h"
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
@@ -206,4 +208,40 @@ namespace DiskImpact
     });
     timer.print_summary();
   }
+
+  namespace
+  {
+    TaskEntry
+    modal_convergence_task()
+    {
+      TaskEntry task;
+      task.name         = "modal convergence";
+      task.description  = "the modal analysis on a sequence of meshes and "
+                          "degrees, with observed orders "
+                          "(modal_convergence.csv).";
+      task.traits.modal = true;
+      task.result_files = {"modal_convergence.csv"};
+      task.run = [](const Parameters &parameters, bool, MPI_Comm communicator) {
+        parameters.modal_convergence.run(parameters, communicator);
+      };
+      task.build_largest_mesh = [](const Parameters &parameters,
+                                   Triangulation<2> &mesh,
+                                   const auto       &cell_budget) {
+        in_context("Modal convergence: the finest of 'Refinement levels' and "
+                   "'Degrees'",
+                   [&]() {
+                     const Parameters finest =
+                       parameters.modal_convergence.finest(parameters);
+                     finest.geometry.create_triangulation(
+                       mesh, cell_budget(finest.finite_element.degree));
+                   });
+        check_mode_count(parameters.modal_convergence.coarsest(parameters),
+                         "Modal convergence: 'Modes compared' on the "
+                         "coarsest of 'Refinement levels' and 'Degrees'");
+      };
+      return task;
+    }
+  } // namespace
+
+  DISKIMPACT_REGISTER_TASK(modal_convergence_task())
 } // namespace DiskImpact

@@ -2,10 +2,11 @@
 
 #include "base/input_error.h"
 #include "base/parameter_lists.h"
-#include "base/parameters.h"
 #include "base/renamed_entries.h"
 #include "base/run_error.h"
 #include "output/csv_table.h"
+#include "tasks/parameters.h"
+#include "tasks/task_registry.h"
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
@@ -437,4 +438,30 @@ namespace DiskImpact
                           pcout);
     });
   }
+
+  namespace
+  {
+    TaskEntry
+    modal_expansion_task()
+    {
+      TaskEntry task;
+      task.name          = "modal expansion impact";
+      task.description   = "the impact in the modal expansion of Gerl & "
+                           "Zippelius 1999 with its smooth wall potential, "
+                           "extrapolated to all modes and hard contact "
+                           "(subsection Modal expansion, modal_expansion.csv, "
+                           "modal_extrapolation.csv).";
+      task.traits.meshes = false;
+      task.traits.sphere = false;
+      task.result_files  = {"modal_expansion.csv",
+                            "modal_expansion_modes.csv",
+                            "modal_extrapolation.csv"};
+      task.run = [](const Parameters &parameters, bool, MPI_Comm communicator) {
+        parameters.modal_expansion.run(parameters, communicator);
+      };
+      return task;
+    }
+  } // namespace
+
+  DISKIMPACT_REGISTER_TASK(modal_expansion_task())
 } // namespace DiskImpact

@@ -2,9 +2,9 @@
 
 #include "base/input_error.h"
 #include "base/parameter_lists.h"
-#include "base/parameters.h"
 #include "base/run_error.h"
 #include "contact/contact_operator.h"
+#include "contact/penalty_law.h"
 #include "dynamics/factorization.h"
 #include "elasticity/elasticity_operator.h"
 #include "output/atomic_file.h"
@@ -14,7 +14,9 @@
 #include "reference/two_body_contact.h"
 #include "reference/wall_contact_theory.h"
 #include "tasks/impact.h"
+#include "tasks/parameters.h"
 #include "tasks/quasistatic_pair.h"
+#include "tasks/task_registry.h"
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/data_out_base.h>
@@ -37,6 +39,17 @@
 namespace DiskImpact
 {
   using namespace dealii;
+
+  namespace
+  {
+    /// The penalty factor kappa of the task's law ('Law = penalty').
+    double
+    penalty_factor(const Parameters &parameters)
+    {
+      return dynamic_cast<const PenaltyLaw &>(parameters.contact.parsed())
+        .penalty_factor();
+    }
+  } // namespace
 
   namespace
   {
@@ -118,8 +131,9 @@ namespace DiskImpact
       contact               = std::make_unique<ContactOperator>(
         op,
         wall,
-        parameters.contact.penalty_law(
-          parameters.material.in_plane_young_modulus(), h_contact),
+        parameters.contact.law({parameters.material.in_plane_young_modulus(),
+                                              h_contact,
+                                              geometry.radius()}),
         geometry.center());
 
       // Uniform body force toward the wall, P in total on the whole body:
@@ -441,7 +455,7 @@ namespace DiskImpact
         law.add(p.newton_iterations);
         for (const double v : {a_hertz,
                                p.force_balance,
-                               parameters.contact.penalty_factor(),
+                               penalty_factor(parameters),
                                p.h_contact})
           law.add(v);
         law.add(p.n_dofs);
@@ -575,9 +589,8 @@ namespace DiskImpact
               partner.constant})
           law.add(v);
         law.add(p.newton_iterations);
-        for (const double v : {p.force_balance,
-                               parameters.contact.penalty_factor(),
-                               p.h_contact})
+        for (const double v :
+             {p.force_balance, penalty_factor(parameters), p.h_contact})
           law.add(v);
         law.add(p.n_dofs);
         for (const double v :
@@ -607,4 +620,48 @@ namespace DiskImpact
       });
     });
   }
+
+  namespace
+  {
+    TaskEntry
+    quasistatic_contact_task()
+    {
+      TaskEntry task;
+      task.name        = "quasistatic contact";
+      task.description = "the half body pressed on the wall (or its partner) "
+                         "by a body force, the contact law delta(P) "
+                         "(contact_law.csv).";
+      task.traits.partner_body = true;
+      task.result_files        = {"contact_law.csv",
+                                  "pressure_profile.csv",
+                                  "contact.pvd",
+                                  "contact_*.vtu",
+                                  "contact_*.pvtu"};
+      task.run = [](const Parameters &parameters, bool, MPI_Comm communicator) {
+        parameters.quasistatic_contact.run(parameters, communicator);
+      };
+      task.check = [](const Parameters &parameters) {
+        require(parameters.geometry.is_half_disk(),
+                "Task 'quasistatic contact' needs 'Domain = half disk' (the "
+                "symmetry condition holds the rigid motions the wall does "
+                "not)");
+        parameters.contact.check_wall(parameters.geometry, 0.);
+        require(parameters.contact.law_name() == "penalty",
+                "Task 'quasistatic contact' needs 'Law = penalty' in "
+                "subsection Contact");
+      };
+      task.build_largest_mesh = [](const Parameters &parameters,
+                                   Triangulation<2> &mesh,
+                                   const auto       &cell_budget) {
+        parameters.quasistatic_contact.create_mesh(
+          parameters,
+          parameters.quasistatic_contact.largest_load(),
+          mesh,
+          cell_budget(parameters.finite_element.degree));
+      };
+      return task;
+    }
+  } // namespace
+
+  DISKIMPACT_REGISTER_TASK(quasistatic_contact_task())
 } // namespace DiskImpact

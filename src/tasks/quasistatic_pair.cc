@@ -1,11 +1,11 @@
 #include "tasks/quasistatic_pair.h"
 
-#include "base/parameters.h"
 #include "base/run_error.h"
 #include "contact/contact_operator.h"
 #include "output/state_output.h"
 #include "reference/wall_contact_theory.h"
 #include "tasks/impact.h"
+#include "tasks/parameters.h"
 
 #include <deal.II/base/utilities.h>
 
@@ -61,11 +61,10 @@ namespace DiskImpact
     // that of the edge of Hertz's contact, a^2 / (2 R_eff), beyond the law's
     // reach (out to about 1.7 a); solve() checks that the contact stays
     // within the inner half.
-    const WallLaw law =
-      parameters.contact.penalty_law(Impact::contact_modulus(parameters),
-                                     h_contact);
+    const auto law = parameters.contact.law(
+      {Impact::contact_modulus(parameters), h_contact, geometry.radius()});
     const double bound =
-      law.reach() + 1.5 * a_hertz * a_hertz / effective_radius;
+      law->reach() + 1.5 * a_hertz * a_hertz / effective_radius;
     zone = std::make_unique<ContactZone>(
       op, wall, law, geometry.center(), bound, true);
     std::vector<unsigned int> all(zone->candidate_dofs().size());

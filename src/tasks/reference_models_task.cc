@@ -2,7 +2,6 @@
 
 #include "base/input_error.h"
 #include "base/parameter_lists.h"
-#include "base/parameters.h"
 #include "base/renamed_entries.h"
 #include "base/run_error.h"
 #include "output/csv_table.h"
@@ -11,6 +10,8 @@
 #include "reference/rayleigh_vibration.h"
 #include "reference/schwager_disk.h"
 #include "reference/viscoelastic_spheres.h"
+#include "tasks/parameters.h"
+#include "tasks/task_registry.h"
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
@@ -452,4 +453,33 @@ namespace DiskImpact
         }
     table.write(filename);
   }
+
+  namespace
+  {
+    TaskEntry
+    reference_models_task()
+    {
+      TaskEntry task;
+      task.name          = "reference models";
+      task.description   = "epsilon of a reduced collision model of the disk, "
+                           "no finite elements (subsection Reference models, "
+                           "reference_<model>.csv).";
+      task.traits.meshes = false;
+      task.traits.sphere = false;
+      task.result_files  = {"reference_*.csv"};
+      task.run = [](const Parameters &parameters, bool, MPI_Comm communicator) {
+        parameters.reference_models.run(parameters, communicator);
+      };
+      task.check = [](const Parameters &parameters) {
+        parameters.reference_models.check_velocities(
+          parameters.impact.contact_law_constant_value(parameters));
+      };
+      task.kept_results = [](const Parameters &parameters) {
+        return parameters.reference_models.other_models_files();
+      };
+      return task;
+    }
+  } // namespace
+
+  DISKIMPACT_REGISTER_TASK(reference_models_task())
 } // namespace DiskImpact

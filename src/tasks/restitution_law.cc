@@ -1,12 +1,14 @@
 #include "tasks/restitution_law.h"
 
 #include "base/input_error.h"
-#include "base/parameters.h"
 #include "base/run_error.h"
 #include "output/atomic_file.h"
 #include "output/csv_table.h"
-#include "reference/dem_contact_models.h"
+#include "restitution/dem_inputs.h"
+#include "restitution/restitution_fit.h"
+#include "tasks/parameters.h"
 #include "tasks/sweep_task.h"
+#include "tasks/task_registry.h"
 
 #include <deal.II/base/mpi.h>
 
@@ -34,13 +36,19 @@ namespace DiskImpact
 
   namespace
   {
-    /// The sweep's results, in the run's dimensionless units.
-    struct LawTable
+    std::string
+    json_list(const std::vector<double> &values)
     {
-      std::vector<double> v, epsilon, error, contact_time, delta_max, force_max;
-    };
+      std::ostringstream text;
+      text << std::setprecision(17) << '[';
+      for (unsigned int i = 0; i < values.size(); ++i)
+        text << (i > 0 ? ", " : "")
+             << (std::isfinite(values[i]) ? ten_digits(values[i]) : "null");
+      text << ']';
+      return text.str();
+    }
 
-    LawTable
+    RestitutionTable
     read_sweep(const std::string &directory)
     {
       const CsvTable sweep = CsvTable::read(directory + "/restitution.csv");
@@ -50,62 +58,6 @@ namespace DiskImpact
               sweep.column("contact_time"),
               sweep.column("delta_max"),
               sweep.column("force_max")};
-    }
-
-    /// 1 - eps(v) = sum_{k=1}^{K} a_k (v / v_ref)^{k/5}: Hertz's scaling of
-    /// the viscoelastic sphere's series (Ramírez et al. 1999), smooth for any
-    /// body.
-    struct SmoothFit
-    {
-      double              v_ref = 1.;
-      std::vector<double> a;
-      double
-      operator()(const double v) const
-      {
-        const double x   = std::pow(v / v_ref, 0.2);
-        double       sum = 0., power = 1.;
-        for (const double coefficient : a)
-          sum += coefficient * (power *= x);
-        return 1. - sum;
-      }
-    };
-
-    /// The weight of a point: 1 / its error bar (bars of zero or NaN, i.e.
-    /// no error estimate, count as the median bar, or 1).
-    std::vector<double>
-    weights(const std::vector<double> &error)
-    {
-      std::vector<double> finite;
-      for (const double e : error)
-        if (e > 0. && std::isfinite(e))
-          finite.push_back(e);
-      std::sort(finite.begin(), finite.end());
-      const double typical = finite.empty() ? 1. : finite[finite.size() / 2];
-      std::vector<double> w;
-      for (const double e : error)
-        w.push_back(1. / (e > 0. && std::isfinite(e) ? e : typical));
-      return w;
-    }
-
-    /// Weighted least squares for the a_k.
-    SmoothFit
-    fit_smooth(const LawTable &table, const double v_ref, unsigned int terms)
-    {
-      const unsigned int n = table.v.size();
-      terms                = std::min<unsigned int>(terms, std::max(1u, n - 1));
-      const auto         w = weights(table.error);
-      FullMatrix<double> design(n, terms);
-      Vector<double>     rhs(n), a(terms);
-      for (unsigned int i = 0; i < n; ++i)
-        {
-          const double x     = std::pow(table.v[i] / v_ref, 0.2);
-          double       power = 1.;
-          for (unsigned int k = 0; k < terms; ++k)
-            design(i, k) = w[i] * (power *= x);
-          rhs[i] = w[i] * (1. - table.epsilon[i]);
-        }
-      Householder<double>(design).least_squares(a, rhs);
-      return {v_ref, std::vector<double>(a.begin(), a.end())};
     }
 
     /// The papers' 1-DOF epsilon at speed @p v with dissipative constant A
@@ -128,9 +80,9 @@ namespace DiskImpact
 
     /// A minimizing sum ((eps_theory - eps) / bar)^2 (Brent).
     DissipationFit
-    fit_dissipation(const Parameters &parameters, const LawTable &table)
+    fit_dissipation(const Parameters &parameters, const RestitutionTable &table)
     {
-      const auto w    = weights(table.error);
+      const auto w    = fit_weights(table.error);
       const auto chi2 = [&](const double A) {
         double sum = 0.;
         for (unsigned int i = 0; i < table.v.size(); ++i)
@@ -155,125 +107,6 @@ namespace DiskImpact
       return fit;
     }
 
-    /// y(x0) by linear interpolation in log x (clamped to the ends).
-    double
-    interpolate(const std::vector<double> &x,
-                const std::vector<double> &y,
-                const double               x0)
-    {
-      if (x0 <= x.front())
-        return y.front();
-      for (unsigned int i = 1; i < x.size(); ++i)
-        if (x0 <= x[i])
-          {
-            const double s =
-              std::log(x0 / x[i - 1]) / std::log(x[i] / x[i - 1]);
-            return (1. - s) * y[i - 1] + s * y[i];
-          }
-      return y.back();
-    }
-
-    std::string
-    number(const double value)
-    {
-      std::ostringstream text;
-      text << std::setprecision(10) << value;
-      return text.str();
-    }
-
-    std::string
-    json_list(const std::vector<double> &values)
-    {
-      std::ostringstream text;
-      text << std::setprecision(17) << '[';
-      for (unsigned int i = 0; i < values.size(); ++i)
-        text << (i > 0 ? ", " : "")
-             << (std::isfinite(values[i]) ? number(values[i]) : "null");
-      text << ']';
-      return text.str();
-    }
-
-    /// What a DEM code needs, at the reference speed, in SI.
-    struct DemInputs
-    {
-      double radius, density, young, poisson, mass, speed, epsilon,
-        contact_time, liggghts_restitution, liggghts_epsilon, A, lammps_damping;
-      Reference::LinearDashpotCollision yade; ///< ViscElMat's (en, tc)
-    };
-
-    std::map<std::string, std::string>
-    dem_files(const DemInputs &d)
-    {
-      std::ostringstream head;
-      head << "# diskimpact restitution law (SI units): a sphere of radius "
-           << number(d.radius) << " m, density " << number(d.density)
-           << " kg/m^3, E = " << number(d.young)
-           << " Pa, nu = " << number(d.poisson)
-           << ".\n# At the reference speed " << number(d.speed)
-           << " m/s on a rigid wall (or two such spheres at relative speed "
-           << number(2. * d.speed) << " m/s): epsilon = " << number(d.epsilon)
-           << ", contact time " << number(d.contact_time) << " s.\n";
-      std::map<std::string, std::string> files;
-      files["liggghts.txt"] =
-        head.str() +
-        "# LIGGGHTS, model hertz: its damping keeps epsilon constant in v; "
-        "coefficientRestitution\n# is the input for which LIGGGHTS' model "
-        "gives epsilon = " +
-        number(d.liggghts_epsilon) +
-        ".\n# A wall must have a much larger youngsModulus to act as the "
-        "rigid wall; 'hard_particles yes' allows E > 1e9 Pa.\n"
-        "hard_particles yes\n"
-        "fix m1 all property/global youngsModulus peratomtype " +
-        number(d.young) +
-        "\nfix m2 all property/global poissonsRatio peratomtype " +
-        number(d.poisson) +
-        "\nfix m3 all property/global coefficientRestitution peratomtypepair "
-        "1 " +
-        number(d.liggghts_restitution) +
-        "\nfix m4 all property/global coefficientFriction peratomtypepair 1 "
-        "0.0\npair_style gran model hertz tangential history\n"
-        "pair_coeff * *\n";
-      files["lammps.txt"] =
-        head.str() +
-        "# LAMMPS pair granular, Hertz with viscoelastic damping: Ramírez et "
-        "al.'s "
-        "law with the fitted A = " +
-        number(d.A) +
-        " s,\n# eta_n0 = 2 A E_eff / m_eff, the velocity dependence "
-        "included.\npair_style granular\npair_coeff * * hertz/material " +
-        number(d.young) + " " + number(d.lammps_damping) + " " +
-        number(d.poisson) +
-        " tangential linear_nohistory 0.0 0.0 damping viscoelastic\n";
-      files["yade.py"] =
-        "# Yade, ViscElMat (linear spring-dashpot from contact time and "
-        "restitution)\n" +
-        head.str() +
-        "# ViscElMat's force is never attractive: its epsilon exceeds en "
-        "and its contact time differs\n# from tc. These en, tc give the "
-        "epsilon and contact time above, at every speed.\n"
-        "mat = O.materials.append(ViscElMat(en=" +
-        number(d.yade.epsilon) + ", et=0., tc=" + number(d.yade.contact_time) +
-        ", density=" + number(d.density) + ", frictionAngle=0.))\n";
-      files["mercurydpm.txt"] =
-        "// MercuryDPM, LinearViscoelasticSpecies (particle-wall; for two "
-        "such particles use mass / 2)\n" +
-        std::regex_replace(head.str(), std::regex("(^|\n)# "), "$1// ") +
-        "species.setDensity(" + number(d.density) +
-        ");\nspecies.setCollisionTimeAndRestitutionCoefficient(" +
-        number(d.contact_time) + ", " + number(d.epsilon) + ", " +
-        number(d.mass) + ");\n";
-      files["lethe.prm"] =
-        head.str() +
-        "# Lethe (lethe-particles), subsection lagrangian physical "
-        "properties, particle type 0:\n"
-        "set diameter                          = " +
-        number(2. * d.radius) +
-        "\nset density particles                 = " + number(d.density) +
-        "\nset young modulus particles           = " + number(d.young) +
-        "\nset poisson ratio particles           = " + number(d.poisson) +
-        "\nset restitution coefficient particles = " + number(d.epsilon) + "\n";
-      return files;
-    }
   } // namespace
 
   void
@@ -315,17 +148,17 @@ namespace DiskImpact
     });
     run_sweep(parameters, resume, communicator);
     on_root(communicator, [&]() {
-      const std::string   &directory = parameters.run.output_directory;
-      const LawTable       table     = read_sweep(directory);
-      const auto          &v         = table.v;
-      const double         v_ref     = reference_speed > 0. ?
-                                         reference_speed :
-                                         std::sqrt(*std::min_element(v.begin(), v.end()) *
+      const std::string     &directory = parameters.run.output_directory;
+      const RestitutionTable table     = read_sweep(directory);
+      const auto            &v         = table.v;
+      const double           v_ref     = reference_speed > 0. ?
+                                           reference_speed :
+                                           std::sqrt(*std::min_element(v.begin(), v.end()) *
                                        *std::max_element(v.begin(), v.end()));
-      const SmoothFit      smooth    = fit_smooth(table, v_ref, fit_terms);
-      const DissipationFit theory    = fit_dissipation(parameters, table);
-      const UnitSystem    &units     = parameters.units;
-      const bool           sphere    = parameters.geometry.is_axisymmetric();
+      const SmoothFit        smooth    = fit_smooth(table, v_ref, fit_terms);
+      const DissipationFit   theory    = fit_dissipation(parameters, table);
+      const UnitSystem      &units     = parameters.units;
+      const bool             sphere    = parameters.geometry.is_axisymmetric();
 
       // The table, dimensionless and in SI.
       std::vector<std::string> names{"velocity",
@@ -389,7 +222,7 @@ namespace DiskImpact
           d.speed   = v_ref * units.speed();
           d.epsilon = epsilon_ref;
           d.contact_time =
-            interpolate(v, table.contact_time, v_ref) * units.time();
+            interpolate_in_log(v, table.contact_time, v_ref) * units.time();
           d.liggghts_restitution = Reference::liggghts_hertz_input(epsilon_ref);
           d.liggghts_epsilon =
             Reference::liggghts_hertz_epsilon(d.liggghts_restitution);
@@ -399,16 +232,17 @@ namespace DiskImpact
             d.A, d.young / (1. - d.poisson * d.poisson), d.mass);
           d.yade = Reference::yade_viscel_inputs(d.epsilon, d.contact_time);
           files  = dem_files(d);
-          dem_json << "{\"reference_speed_si\": " << number(d.speed)
-                   << ", \"epsilon\": " << number(d.epsilon)
-                   << ", \"contact_time_si\": " << number(d.contact_time)
+          dem_json << "{\"reference_speed_si\": " << ten_digits(d.speed)
+                   << ", \"epsilon\": " << ten_digits(d.epsilon)
+                   << ", \"contact_time_si\": " << ten_digits(d.contact_time)
                    << ", \"liggghts_coefficient_restitution\": "
-                   << number(d.liggghts_restitution)
-                   << ", \"yade_viscelmat_en\": " << number(d.yade.epsilon)
-                   << ", \"yade_viscelmat_tc\": " << number(d.yade.contact_time)
+                   << ten_digits(d.liggghts_restitution)
+                   << ", \"yade_viscelmat_en\": " << ten_digits(d.yade.epsilon)
+                   << ", \"yade_viscelmat_tc\": "
+                   << ten_digits(d.yade.contact_time)
                    << ", \"lammps_viscoelastic_eta_n0\": "
-                   << number(d.lammps_damping)
-                   << ", \"dissipative_constant_si\": " << number(d.A)
+                   << ten_digits(d.lammps_damping)
+                   << ", \"dissipative_constant_si\": " << ten_digits(d.A)
                    << ", \"files\": [\"dem/liggghts.txt\", \"dem/lammps.txt\", "
                       "\"dem/yade.py\", \"dem/mercurydpm.txt\", "
                       "\"dem/lethe.prm\"]}";
@@ -427,10 +261,10 @@ namespace DiskImpact
            << "\",\n  \"dimensionless_units\": \"" << Impact::units(parameters)
            << "\",\n";
       if (units.is_si())
-        json << "  \"si_scales\": {\"R_m\": " << number(units.length())
-             << ", \"c_m_per_s\": " << number(units.speed())
-             << ", \"R_over_c_s\": " << number(units.time())
-             << ", \"force_unit\": " << number(units.force())
+        json << "  \"si_scales\": {\"R_m\": " << ten_digits(units.length())
+             << ", \"c_m_per_s\": " << ten_digits(units.speed())
+             << ", \"R_over_c_s\": " << ten_digits(units.time())
+             << ", \"force_unit\": " << ten_digits(units.force())
              << ", \"force_unit_name\": \"" << units.force_name() << "\"},\n";
       json << "  \"table\": {\"velocity\": " << json_list(v)
            << ", \"epsilon\": " << json_list(table.epsilon)
@@ -440,20 +274,20 @@ namespace DiskImpact
            << ", \"force_max\": " << json_list(table.force_max) << "},\n"
            << "  \"smooth_fit\": {\"form\": \"1 - sum_k a_k (v/v_ref)^(k/5)\", "
               "\"v_ref\": "
-           << number(v_ref) << ", \"a\": " << json_list(smooth.a)
-           << ", \"max_residual\": " << number(smooth_residual) << "},\n"
+           << ten_digits(v_ref) << ", \"a\": " << json_list(smooth.a)
+           << ", \"max_residual\": " << ten_digits(smooth_residual) << "},\n"
            << "  \"theory_fit\": {\"model\": \""
            << (sphere ? "Ramírez et al. 1999 (Brilliantov) with A" :
                         "Schwager 2007 (Schwager) with A")
-           << "\", \"A\": " << number(theory.A) << ", \"relaxation_time\": "
-           << number(parameters.material.relaxation_time())
+           << "\", \"A\": " << ten_digits(theory.A) << ", \"relaxation_time\": "
+           << ten_digits(parameters.material.relaxation_time())
            << ", \"time_unit\": \"R sqrt(rho/E)\""
            << (units.is_si() ?
-                 ", \"A_si\": " + number(theory.A * units.input_time()) :
+                 ", \"A_si\": " + ten_digits(theory.A * units.input_time()) :
                  std::string())
-           << ", \"max_residual\": " << number(theory_residual) << "},\n"
-           << "  \"reference_speed\": " << number(v_ref)
-           << ",\n  \"epsilon_at_reference_speed\": " << number(epsilon_ref)
+           << ", \"max_residual\": " << ten_digits(theory_residual) << "},\n"
+           << "  \"reference_speed\": " << ten_digits(v_ref)
+           << ",\n  \"epsilon_at_reference_speed\": " << ten_digits(epsilon_ref)
            << ",\n  \"dem\": " << dem_json.str()
            << ",\n  \"parameters\": " << parameters.run.parameters_json
            << "\n}\n";
@@ -461,21 +295,22 @@ namespace DiskImpact
 
       // The reference speed in the units of the parameter file.
       const std::string reference_speed =
-        units.is_si() ? number(v_ref * units.speed()) + " m/s" :
-                        number(v_ref) + " c";
+        units.is_si() ? ten_digits(v_ref * units.speed()) + " m/s" :
+                        ten_digits(v_ref) + " c";
       std::cout << "Restitution law: smooth fit 1 - eps = sum a_k (v / "
                 << reference_speed << ")^{k/5}, a = " << json_list(smooth.a)
-                << ", largest residual " << number(smooth_residual)
+                << ", largest residual " << ten_digits(smooth_residual)
                 << "\n  1-DOF theory fit: A = "
-                << number(theory.A * (units.is_si() ? units.input_time() : 1.))
+                << ten_digits(theory.A *
+                              (units.is_si() ? units.input_time() : 1.))
                 << (units.is_si() ? " s" : " (units of 'Relaxation time')")
                 << ", tau = "
-                << number(parameters.material.relaxation_time() *
-                          (units.is_si() ? units.input_time() : 1.))
+                << ten_digits(parameters.material.relaxation_time() *
+                              (units.is_si() ? units.input_time() : 1.))
                 << (units.is_si() ? " s" : "") << ", largest residual "
-                << number(theory_residual)
+                << ten_digits(theory_residual)
                 << "\n  at v_ref = " << reference_speed
-                << ": epsilon = " << number(epsilon_ref) << '\n';
+                << ": epsilon = " << ten_digits(epsilon_ref) << '\n';
       if (!files.empty())
         std::cout << "  DEM inputs in " << directory
                   << "/dem/ (LIGGGHTS, LAMMPS, Yade, MercuryDPM, Lethe)\n";
@@ -486,4 +321,34 @@ namespace DiskImpact
                   << '\n';
     });
   }
+
+  namespace
+  {
+    TaskEntry
+    restitution_law_task()
+    {
+      TaskEntry task;
+      task.name           = "restitution law";
+      task.description    = "the sweep with its convergence studies, then "
+                            "epsilon(v) fitted and stated as input for DEM "
+                            "codes (subsection Restitution law; "
+                            "restitution_law.csv, restitution_law.json, dem/).";
+      task.traits.impacts = true;
+      task.traits.sweeps  = true;
+      task.traits.one_mesh_per_rank = true;
+      task.result_files             = sweep_result_files();
+      task.result_files.insert(task.result_files.end(),
+                               {"restitution_law.csv", "restitution_law.json"});
+      task.run = [](const Parameters &parameters,
+                    const bool        resume,
+                    MPI_Comm          communicator) {
+        parameters.restitution_law.run(parameters, resume, communicator);
+      };
+      task.check              = check_sweep;
+      task.build_largest_mesh = build_fastest_mesh;
+      return task;
+    }
+  } // namespace
+
+  DISKIMPACT_REGISTER_TASK(restitution_law_task())
 } // namespace DiskImpact

@@ -2,6 +2,9 @@
 
 #include <mpi.h>
 
+#include <functional>
+#include <string>
+
 namespace DiskImpact
 {
   struct Parameters;
@@ -16,4 +19,14 @@ namespace DiskImpact
    */
   void
   check_before_output(const Parameters &parameters, MPI_Comm communicator);
+
+  /// Rethrow an InputError of @p check with @p context in front.
+  void
+  in_context(const std::string &context, const std::function<void()> &check);
+
+  /// An InputError unless the modes a modal analysis of @p parameters asks
+  /// for ('Number of modes', named @p entry in the message) are at most
+  /// half its DoFs.
+  void
+  check_mode_count(const Parameters &parameters, const std::string &entry);
 } // namespace DiskImpact

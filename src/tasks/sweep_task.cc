@@ -1,11 +1,14 @@
 #include "tasks/sweep_task.h"
 
-#include "base/parameters.h"
+#include "base/input_error.h"
 #include "base/run_error.h"
 #include "output/csv_table.h"
 #include "output/file_lock.h"
 #include "output/hdf5_output.h"
 #include "tasks/impact.h"
+#include "tasks/parameters.h"
+#include "tasks/run_checks.h"
+#include "tasks/task_registry.h"
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
@@ -592,4 +595,85 @@ namespace DiskImpact
                      "); the finished points are kept in restitution.csv: "
                      "rerun to compute the rest");
   }
+
+  void
+  check_sweep(const Parameters &parameters)
+  {
+    const auto          &impact = parameters.impact;
+    std::vector<Partner> partners{parameters.partner};
+    if (!impact.partner_radii().empty())
+      partners.clear();
+    for (const double r2 : impact.partner_radii())
+      partners.push_back(parameters.partner.with_radius(r2));
+    for (const Partner &other : partners)
+      for (const double v : impact.velocities())
+        {
+          Parameters point = parameters;
+          point.partner    = other;
+          point.impact.set_velocity(v);
+          point.impact.check_time_step(point);
+        }
+    require(!impact.velocities().empty(),
+            "Impact: 'Velocities' is empty: task 'sweep' needs at least "
+            "one impact speed");
+    // Every point's material, checked before any point runs.
+    const auto in_list = [](const std::string &entry, const auto &check) {
+      try
+        {
+          check();
+        }
+      catch (const InputError &e)
+        {
+          throw InputError("Impact: an entry of '" + entry +
+                           "' is out of range (" + e.what() + ")");
+        }
+    };
+    for (const double nu : impact.poisson_ratios())
+      in_list("Poisson ratios",
+              [&]() { parameters.material.with_poisson_ratio(nu); });
+    for (const double tau : impact.relaxation_times())
+      in_list("Relaxation times",
+              [&]() { parameters.material.with_relaxation_time(tau); });
+  }
+
+  void
+  build_fastest_mesh(const Parameters                          &parameters,
+                     Triangulation<2>                          &mesh,
+                     const std::function<double(unsigned int)> &cell_budget)
+  {
+    in_context("Sweep: the fastest impact's finest mesh", [&]() {
+      Parameters  fastest    = parameters.impact.estimate_errors() ?
+                                 parameters.impact_convergence.finest(parameters) :
+                                 parameters;
+      const auto &velocities = parameters.impact.velocities();
+      fastest.impact.set_velocity(
+        *std::max_element(velocities.begin(), velocities.end()));
+      fastest.impact.create_mesh(fastest,
+                                 mesh,
+                                 cell_budget(fastest.finite_element.degree));
+    });
+  }
+
+  namespace
+  {
+    TaskEntry
+    sweep_task()
+    {
+      TaskEntry task;
+      task.name        = "sweep";
+      task.description = "epsilon(v) for the velocities of subsection Impact "
+                         "(restitution.csv).";
+      task.traits.impacts           = true;
+      task.traits.sweeps            = true;
+      task.traits.partner_body      = true;
+      task.traits.one_mesh_per_rank = true;
+      task.result_files             = sweep_result_files();
+      task.run                      = run_sweep;
+      task.check                    = check_sweep;
+      task.build_largest_mesh       = build_fastest_mesh;
+      return task;
+    }
+  } // namespace
+
+  DISKIMPACT_REGISTER_TASK(sweep_task())
 } // namespace DiskImpact

@@ -2,8 +2,11 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <deal.II/grid/tria.h>
+
 #include <mpi.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -44,4 +47,16 @@ namespace DiskImpact
    */
   void
   run_sweep(const Parameters &parameters, bool resume, MPI_Comm communicator);
+
+  /// The checks of a sweep's points before any runs: every point's time
+  /// step and material.
+  void
+  check_sweep(const Parameters &parameters);
+
+  /// The fastest impact's finest mesh (it needs the largest contact zone),
+  /// within @p cell_budget(degree) cells.
+  void
+  build_fastest_mesh(const Parameters                          &parameters,
+                     dealii::Triangulation<2>                  &mesh,
+                     const std::function<double(unsigned int)> &cell_budget);
 } // namespace DiskImpact

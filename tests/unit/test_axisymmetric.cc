@@ -3,7 +3,7 @@
 
 #include "body/geometry.h"
 #include "elasticity/elasticity_operator.h"
-#include "elasticity/material.h"
+#include "material/material.h"
 
 #include <deal.II/base/function.h>
 #include <deal.II/base/parameter_handler.h>

@@ -2,9 +2,12 @@
 // tangent against finite differences of its residual, and the log contact law
 // with its Lambert-W inverse.
 
+#include "base/input_error.h"
 #include "body/geometry.h"
 #include "contact/contact.h"
 #include "contact/contact_operator.h"
+#include "contact/exponential_law.h"
+#include "contact/penalty_law.h"
 #include "elasticity/elasticity_operator.h"
 #include "half_disk.h"
 #include "reference/log_contact_law.h"
@@ -23,30 +26,29 @@ using namespace DiskImpact;
 
 namespace
 {
-  WallLaw
+  /// The penalty law of stiffness @p stiffness (kappa = 100, h = 1).
+  std::shared_ptr<const ContactLaw>
   penalty(const double stiffness)
   {
-    WallLaw law;
-    law.stiffness = stiffness;
+    auto law = std::make_shared<PenaltyLaw>();
+    law->set_scales({stiffness / law->penalty_factor(), 1., 1.});
     return law;
   }
 
   /// The exponential law of alpha = 200 on R = 1 with a threshold large
   /// enough to see (1e-3 instead of 1e-16).
-  WallLaw
+  std::shared_ptr<const ContactLaw>
   exponential()
   {
-    WallLaw law;
-    law.kind      = WallLawKind::exponential;
-    law.decay     = 200.;
-    law.threshold = 1e-3;
+    auto law = std::make_shared<ExponentialLaw>();
+    law->set(200., 1e-3);
     return law;
   }
 
   /// p = -dE/dg and dp/dg by central differences at the gap @p g (away
   /// from the kink at 0).
   void
-  check_pressure_is_energy_gradient(const WallLaw &law, const double g)
+  check_pressure_is_energy_gradient(const ContactLaw &law, const double g)
   {
     const double h = 1e-9;
     CHECK(law.pressure(g) ==
@@ -60,9 +62,42 @@ namespace
   }
 } // namespace
 
+TEST_CASE("contact laws are selected by name from the registry", "[contact]")
+{
+  std::vector<std::string> names;
+  for (const auto &entry : ContactLaws::all())
+    names.push_back(entry.name);
+  CHECK(names == std::vector<std::string>{"exponential", "penalty"});
+  CHECK(dynamic_cast<PenaltyLaw *>(ContactLaws::create("penalty").get()));
+  CHECK(
+    dynamic_cast<ExponentialLaw *>(ContactLaws::create("exponential").get()));
+  CHECK_THROWS_AS(ContactLaws::create("constraint"), InputError);
+
+  // The law chosen in subsection Contact, scaled: k = kappa E2 / h.
+  dealii::ParameterHandler prm;
+  ContactParameters::declare_parameters(prm);
+  prm.enter_subsection("Contact");
+  prm.set("Law", "penalty");
+  prm.set("Penalty factor", "50");
+  prm.leave_subsection();
+  ContactParameters contact;
+  contact.parse_parameters(prm);
+  const auto law = contact.law({2., 0.25, 1.});
+  CHECK(law->pressure(-0.01) == Approx(50. * 2. / 0.25 * 0.01));
+  CHECK(law->approximates_hard_contact());
+  // A copy's law is its own: stiffening it leaves the original's.
+  ContactParameters stiffer = contact;
+  stiffer.stiffen_law(4.);
+  CHECK(stiffer.law({2., 0.25, 1.})->pressure(-0.01) ==
+        Approx(4. * law->pressure(-0.01)));
+  CHECK(contact.law({2., 0.25, 1.})->pressure(-0.01) ==
+        Approx(law->pressure(-0.01)));
+}
+
 TEST_CASE("penalty law: pressure, derivative and energy", "[contact]")
 {
-  const WallLaw law = penalty(250.);
+  const auto        held = penalty(250.);
+  const ContactLaw &law  = *held;
   for (const double g : {-1e-3, -2e-5, 3e-5, 1e-2})
     {
       CAPTURE(g);
@@ -74,13 +109,14 @@ TEST_CASE("penalty law: pressure, derivative and energy", "[contact]")
 TEST_CASE("penalty law: discrete gradient releases the exact energy",
           "[contact]")
 {
-  const WallLaw law        = penalty(300.);
-  const double  pairs[][2] = {{1e-3, -2e-3},
-                              {-2e-3, 1e-3},
-                              {-1e-3, -3e-3},
-                              {2e-3, 5e-3},
-                              {-1e-3, -1e-3},
-                              {-1e-3, -1e-3 + 1e-16}};
+  const auto        held       = penalty(300.);
+  const ContactLaw &law        = *held;
+  const double      pairs[][2] = {{1e-3, -2e-3},
+                                  {-2e-3, 1e-3},
+                                  {-1e-3, -3e-3},
+                                  {2e-3, 5e-3},
+                                  {-1e-3, -1e-3},
+                                  {-1e-3, -1e-3 + 1e-16}};
   for (const auto &[g0, g1] : pairs)
     {
       CAPTURE(g0, g1);
@@ -105,7 +141,8 @@ TEST_CASE("penalty law: discrete gradient releases the exact energy",
 TEST_CASE("exponential law: pressure, energy and the discrete gradient",
           "[contact]")
 {
-  const WallLaw law = exponential();
+  const auto        held = exponential();
+  const ContactLaw &law  = *held;
   for (const double g : {-0.05, -1e-3, -2e-5, 3e-5})
     {
       CAPTURE(g);
@@ -150,7 +187,7 @@ TEST_CASE("contact tangent is the derivative of the contact residual",
   const RigidWall wall{dealii::Point<2>(0., 0.),
                        dealii::Tensor<1, 2>({1., 0.})};
   // Both laws; the exponential one smooth, the penalty piecewise linear.
-  const WallLaw         law = GENERATE(penalty(1e3), exponential());
+  const auto            law = GENERATE(penalty(1e3), exponential());
   const ContactOperator contact(op, wall, law, geometry.center());
 
   // A state that penetrates the wall over part of the edge, and a direction.

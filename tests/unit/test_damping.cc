@@ -1,4 +1,4 @@
-#include "elasticity/material.h"
+#include "material/material.h"
 
 #include <deal.II/base/symmetric_tensor.h>
 

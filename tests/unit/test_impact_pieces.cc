@@ -3,16 +3,16 @@
 // operators against impacts on their own, and the 1-DOF log-law collision
 // against an independent ODE integration.
 
-#include "base/parameters.h"
 #include "body/geometry.h"
 #include "dynamics/condensed_solver.h"
 #include "dynamics/factorization.h"
 #include "elasticity/elasticity_operator.h"
-#include "elasticity/material.h"
 #include "half_disk.h"
+#include "material/material.h"
 #include "reference/log_contact_law.h"
 #include "reference/one_dof_impact.h"
 #include "tasks/impact_operators.h"
+#include "tasks/parameters.h"
 
 #include <deal.II/distributed/tria.h>
 

@@ -6,8 +6,8 @@
 #include "elasticity/constraint_map.h"
 #include "elasticity/elasticity_operator.h"
 #include "elasticity/interleaved_mass.h"
-#include "elasticity/material.h"
 #include "half_disk.h"
+#include "material/material.h"
 
 #include <deal.II/distributed/tria.h>
 

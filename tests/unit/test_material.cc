@@ -2,7 +2,7 @@
 // formulas, and the in-plane mapping of Gerl & Zippelius 1999, eq. 2.
 
 #include "base/input_error.h"
-#include "elasticity/material.h"
+#include "material/material.h"
 
 #include <deal.II/base/symmetric_tensor.h>
 

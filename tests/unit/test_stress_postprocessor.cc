@@ -4,8 +4,8 @@
 // nu2 = 1/3; plane strain: E = 15/16, nu = 1/4, Gerl & Zippelius 1999, eq. 2),
 // checked against 3D Hooke's law and under rotation.
 
-#include "elasticity/material.h"
 #include "elasticity/stress_postprocessor.h"
+#include "material/material.h"
 
 #include <deal.II/base/tensor.h>
 

@@ -1,4 +1,4 @@
-#include "body/body_motion.h"
+#include "elasticity/body_motion.h"
 
 #include "elasticity/elasticity_operator.h"
 

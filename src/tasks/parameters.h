@@ -1,5 +1,6 @@
 #pragma once
 
+#include "base/parameter_file.h"
 #include "base/run_parameters.h"
 #include "base/unit_system.h"
 #include "body/geometry.h"
@@ -7,7 +8,7 @@
 #include "contact/contact.h"
 #include "dynamics/time_integrator.h"
 #include "elasticity/elasticity_operator.h"
-#include "elasticity/material.h"
+#include "material/material.h"
 #include "modal/modal_solver.h"
 #include "tasks/impact.h"
 #include "tasks/impact_convergence_study.h"
@@ -16,6 +17,7 @@
 #include "tasks/quasistatic_contact.h"
 #include "tasks/reference_models_task.h"
 #include "tasks/restitution_law.h"
+#include "tasks/task_registry.h"
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -43,6 +45,10 @@ namespace DiskImpact
     /// Parse @p prm; an SI run is parsed as its dimensionless equivalent.
     void
     parse_parameters(dealii::ParameterHandler &prm);
+
+    /// The task 'Task' names.
+    const TaskEntry &
+    task() const;
 
     RunParameters           run;
     UnitSystem              units;
@@ -76,17 +82,4 @@ namespace DiskImpact
     void
     warn_of_locking();
   };
-
-  /**
-   * Read @p filename into @p prm, its 'include FILE' lines replaced by
-   * FILE (relative to the working directory, else to the including file). A
-   * missing file, an include cycle, an unknown or misspelled entry or a
-   * value that does not match its pattern throws an InputError with a
-   * one-line message naming the file, the line and the entry. Returns one
-   * notice per entry set by an old name (renamed_entries()), naming the
-   * file, the line and the new name.
-   */
-  std::vector<std::string>
-  read_parameter_file(dealii::ParameterHandler &prm,
-                      const std::string        &filename);
 } // namespace DiskImpact

@@ -1,0 +1,459 @@
+#include "dynamics/contact_stepper.h"
+
+#include "contact/complementarity.h"
+#include "dynamics/anderson_acceleration.h"
+
+#include <algorithm>
+
+namespace DiskImpact
+{
+  using namespace dealii;
+
+  ContactStepper::ContactStepper(const ElasticityOperator &op,
+                                 const ConstraintMap      &constraint_map,
+                                 const InterleavedMass    &mass_product,
+                                 ContactZone              &zone,
+                                 const TimeIntegrator     &integrator,
+                                 const bool                exact_constraint,
+                                 std::shared_ptr<Factorization> &factorization,
+                                 const double                    gap_scale,
+                                 MPI_Comm                        communicator)
+      : op(op)
+      , constraint_map(constraint_map)
+      , mass_product(mass_product)
+      , zone(zone)
+      , integrator(integrator)
+      , exact_constraint(exact_constraint)
+      , factorization(factorization)
+      , gap_scale(gap_scale)
+      , communicator(communicator)
+  {
+    if (exact_constraint && integrator.conserves_energy())
+      {
+        massless   = std::make_unique<MasslessZone>(op, zone.candidate_dofs());
+        point_rows = zone.point_rows();
+        static_compliance = massless->compliance(point_rows);
+      }
+    for (PETScWrappers::MPI::Vector *x :
+         std::initializer_list<PETScWrappers::MPI::Vector *>{&u,
+                                                             &v,
+                                                             &a,
+                                                             &u_new,
+                                                             &v_new,
+                                                             &a_new,
+                                                             &b,
+                                                             &stiffness_u,
+                                                             &mass_u,
+                                                             &mass_v,
+                                                             &mass_a,
+                                                             &mass_u_new,
+                                                             &mass_v_new,
+                                                             &mass_a_new,
+                                                             &work,
+                                                             &product})
+      *x = op.create_vector();
+    u_D.reinit(zone.candidate_dofs().size());
+    point_forces.reinit(zone.n_points());
+    point_forces_new.reinit(zone.n_points());
+  }
+
+  void
+  ContactStepper::start(const PETScWrappers::MPI::Vector &velocity,
+                        const double                      step)
+  {
+    v = velocity;
+    constraint_map.zeroed(v, work);
+    op.mass_matrix().vmult(mass_v, work);
+    factorize(step);
+  }
+
+  void
+  ContactStepper::factorize(const double step)
+  {
+    dt = step;
+    if (solver)
+      {
+        factorizations_before += solver->n_factorizations();
+        solves_before += solver->n_triangular_solves();
+        solve_time_before += solver->triangular_solve_time();
+      }
+    // A = cK K + cM M (+ cD D): M's pattern is a subset of K's, D's is K's.
+    MatrixSum A{{integrator.stiffness_coefficient(), &op.stiffness_matrix()},
+                {integrator.mass_coefficient(dt), &op.mass_matrix()}};
+    if (op.has_damping())
+      A.push_back({integrator.damping_coefficient(dt),
+                   &op.damping_matrix(),
+                   SAME_NONZERO_PATTERN});
+
+    // The old solver's columns belong to the old factorization.
+    solver.reset();
+    if (factorization)
+      factorization->refactorize(A);
+    else
+      factorization = std::make_shared<Factorization>(
+        A, communicator, op.get_dof_handler().get_fe().n_components());
+    solver = std::make_unique<CondensedSolver>(factorization,
+                                               op.locally_owned_dofs(),
+                                               communicator);
+    solver->set_observed_dofs(zone.candidate_dofs());
+    solver->add_dofs(zone.active_dofs());
+  }
+
+  ContactStepper::StepResult
+  ContactStepper::advance(const double step)
+  {
+    StepResult result;
+    if (step != dt)
+      factorize(step);
+    while (!attempt_step())
+      {
+        if (++cuts > integrator.max_step_cuts())
+          {
+            result.converged = false;
+            return result;
+          }
+        ++result.cuts;
+        factorize(0.5 * dt);
+      }
+    complete_step();
+    if (op.has_damping())
+      {
+        integrator.damping_velocity<PETScWrappers::MPI::Vector>(v, v_new, work);
+        result.viscous_work = 2. * dt * damping_form(work);
+      }
+    u.exchange(u_new);
+    v.exchange(v_new);
+    a.exchange(a_new);
+    mass_u.exchange(mass_u_new);
+    mass_v.exchange(mass_v_new);
+    mass_a.exchange(mass_a_new);
+    u_D = u1_D_new;
+    point_forces.swap(point_forces_new);
+    t += dt;
+    result.dt    = dt;
+    result.state = state;
+    return result;
+  }
+
+  void
+  ContactStepper::complete_step()
+  {
+    // v_new and a_new are linear combinations of fields that satisfy the
+    // (homogeneous) constraints, so they satisfy them too.
+    integrator.update<PETScWrappers::MPI::Vector>(
+      u, u_new, v, a, dt, v_new, a_new);
+    constraint_map.zeroed(u_new, work);
+    mass_product.vmult(mass_u_new, work);
+    integrator.update<PETScWrappers::MPI::Vector>(
+      mass_u, mass_u_new, mass_v, mass_a, dt, mass_v_new, mass_a_new);
+    update_stiffness_image();
+  }
+
+  bool
+  ContactStepper::attempt_step()
+  {
+    // Right-hand side M w - D z - af K u0, with M w from the images of u0,
+    // v0, a0 and K u0 from update_stiffness_image(). (They differ from M w and
+    // K u0 in the constrained rows only, which the solve keeps to themselves
+    // and distribute() overwrites.)
+    integrator.inertia_vector<PETScWrappers::MPI::Vector>(
+      mass_u, mass_v, mass_a, dt, b);
+    b.add(-integrator.old_stiffness_weight(), stiffness_u);
+    if (op.has_damping())
+      {
+        integrator.damping_vector<PETScWrappers::MPI::Vector>(
+          u, v, a, dt, work);
+        op.damping_matrix().vmult(product, work);
+        b.add(-1., product);
+      }
+    // The response without contact force y: one solve with the factorized
+    // matrix, into u_new. The end state is y + X P(u1_C): a dense system
+    // on C.
+    solver->solve(b, u_new);
+    // The candidates' DoFs are unconstrained (ConstrainedRow), so y needs
+    // its constraints distributed only as part of the end state below.
+    const Vector<double> y_D = solver->observe(u_new);
+    return exact_constraint ? attempt_exact_constraint_step(y_D) :
+                              attempt_penalty_step(y_D);
+  }
+
+  bool
+  ContactStepper::attempt_exact_constraint_step(const Vector<double> &y_D)
+  {
+    // The trapezoidal step, then (energy conserving) the exact mean along
+    // the step: the DoFs with mass see the mean point forces instead of
+    // (mu0 + mu1) / 2. Their difference dmu, held by the massless zone,
+    // moves the end state by A^{-1} (-K_IM e) = X B^T dmu - 2 e,
+    // e = K_MM^{-1} B^T dmu (the massless rows of A are K / 2): no further
+    // solve with A.
+    Vector<double>       u1_D = y_D;
+    Vector<double>       P;
+    Vector<double>       applied(zone.n_points());
+    Vector<double>       y_D_corrected = y_D;
+    AndersonAcceleration acceleration(5);
+    for (unsigned int pass = 0;; ++pass)
+      {
+        if (!attempt_constrained_step(y_D_corrected, u1_D, P))
+          return false;
+        if (!massless || pass == integrator.max_newton_iterations())
+          break;
+        // The fixed point dmu = mean(dmu) - trapezoid, by Anderson's
+        // acceleration.
+        const Vector<double> change = mean_force_correction(u1_D, applied);
+        if (change.linfty_norm() == 0.)
+          break;
+        applied            = acceleration.next(applied, change);
+        const auto missing = zone.inactive_dofs_of(applied);
+        zone.activate(missing);
+        solver->add_dofs(missing);
+        y_D_corrected = y_D;
+        y_D_corrected +=
+          solver->observed_response(zone.constraint_force(applied));
+        y_D_corrected.add(-2.,
+                          massless->response_on_candidates(point_rows,
+                                                           applied));
+      }
+    if (applied.linfty_norm() > 0.)
+      {
+        solver->add_columns(zone.constraint_force(applied), u_new);
+        massless->add_response(point_rows, applied, -2., u_new);
+      }
+    if (P.size() > 0)
+      solver->add_columns(P, u_new);
+    constraint_map.distribute(u_new);
+    state = zone.constraint_state(point_forces,
+                                  point_forces_new,
+                                  zone.restrict_to_active(u1_D),
+                                  integrator.contact_new_weight());
+    // The mean force's share beyond the trapezoidal one.
+    for (const double dmu : applied)
+      state.force_average += dmu;
+    u1_D_new = u1_D;
+    return true;
+  }
+
+  bool
+  ContactStepper::attempt_penalty_step(const Vector<double> &y_D)
+  {
+    Vector<double> u1_D = y_D;
+    Vector<double> P;
+    for (;;)
+      {
+        // Points that touch at the start, the contact-free end or the end
+        // found so far take part: their DoFs join C (one solve each).
+        const auto missing = zone.dofs_to_activate({&u_D, &y_D, &u1_D});
+        zone.activate(missing);
+        solver->add_dofs(missing);
+        if (zone.n_active_dofs() == 0)
+          break;
+        const Vector<double> u0_C = zone.restrict_to_active(u_D);
+        const Vector<double> y_C  = zone.restrict_to_active(y_D);
+        Vector<double>       u1_C = y_C;
+        unsigned int         iterations;
+        const auto           force = [&](const Vector<double> &u_C) {
+          auto f = zone.step_force(u0_C,
+                                   u_C,
+                                   integrator.contact_average(),
+                                   integrator.contact_new_weight(),
+                                   true);
+          return std::make_pair(f.force, f.jacobian);
+        };
+        if (!solver->solve_condensed(y_C,
+                                     force,
+                                     integrator.newton_tolerance() * gap_scale,
+                                     integrator.max_newton_iterations(),
+                                     u1_C,
+                                     iterations))
+          return false;
+        newton_iterations += iterations;
+        P    = force(u1_C).first;
+        u1_D = y_D;
+        u1_D += solver->observed_response(P);
+        if (zone.dofs_to_activate({&u1_D}).empty())
+          break;
+      }
+    if (P.size() > 0)
+      solver->add_columns(P, u_new);
+    constraint_map.distribute(u_new);
+    contact_force             = P;
+    const Vector<double> u0_C = zone.restrict_to_active(u_D);
+    state                     = zone
+              .step_force(u0_C,
+                          zone.restrict_to_active(u1_D),
+                          integrator.contact_average(),
+                          integrator.contact_new_weight(),
+                          false)
+              .state;
+    u1_D_new = u1_D;
+    return true;
+  }
+
+  bool
+  ContactStepper::attempt_constrained_step(const Vector<double> &y_D,
+                                           Vector<double>       &u1_D,
+                                           Vector<double>       &P)
+  {
+    // The contact DoFs carry no mass: at each step's end they are in
+    // equilibrium with the point forces mu1 there, so the step force is
+    // P = af F(mu0) + (1 - af) F(mu1), the end state u1 = y + X P and its
+    // gaps g = q + W mu1 with W = (1 - af) B S B^T: a complementarity
+    // problem on the points that can touch (docs/theory/impact-method.md).
+    const double new_weight = integrator.contact_new_weight();
+    for (;;)
+      {
+        const auto missing = zone.dofs_to_activate({&u_D, &y_D, &u1_D});
+        zone.activate(missing);
+        solver->add_dofs(missing);
+        point_forces_new.reinit(zone.n_points());
+        if (zone.n_active_dofs() == 0)
+          return true;
+        const Vector<double> F0 = zone.constraint_force(point_forces);
+        Vector<double> base_C   = zone.restrict_to_active(y_D); // y_C + af S F0
+        Vector<double> s_f0(F0.size());
+        solver->condensed_matrix().vmult(s_f0, F0);
+        base_C.add(1. - new_weight, s_f0);
+        const auto system = zone.constraint_system(base_C);
+        // W = (1 - af) B S B^T.
+        const unsigned int n = system.points.size();
+        FullMatrix<double> sbt(solver->n_contact_dofs(), n), W(n, n);
+        solver->condensed_matrix().mTmult(sbt, system.rows);
+        system.rows.mmult(W, sbt);
+        W *= new_weight;
+        std::vector<bool> warm(n);
+        for (unsigned int r = 0; r < n; ++r)
+          warm[r] = point_forces[system.points[r]] > 0.;
+        const auto solution = solve_complementarity(
+          W, system.gaps, integrator.newton_tolerance() * gap_scale, warm);
+        if (!solution.converged)
+          return false;
+        newton_iterations += solution.iterations;
+        for (unsigned int r = 0; r < n; ++r)
+          point_forces_new[system.points[r]] = solution.force[r];
+        P = F0;
+        P *= 1. - new_weight;
+        P.add(new_weight, zone.constraint_force(point_forces_new));
+        u1_D = y_D;
+        u1_D += solver->observed_response(P);
+        if (zone.dofs_to_activate({&u1_D}).empty())
+          return true;
+      }
+  }
+
+  Vector<double>
+  ContactStepper::mean_force_correction(const Vector<double> &u1_D,
+                                        const Vector<double> &applied) const
+  {
+    // Along the step the DoFs with mass move on a straight line, so the
+    // massless zone's gaps without contact forces, q = g - W_s mu, are
+    // linear in s from the start to the end state; the forces mu(s) solve
+    // the static complementarity problem with them. AVF: the step force is
+    // their mean, where the trapezoidal step used (mu0 + mu1) / 2.
+    const unsigned int n  = zone.n_points();
+    Vector<double>     q0 = zone.point_gaps(u_D), q1 = zone.point_gaps(u1_D);
+    Vector<double>     response(n);
+    static_compliance.vmult(response, point_forces);
+    q0 -= response;
+    static_compliance.vmult(response, point_forces_new);
+    q1 -= response;
+    const Vector<double> target = mean_along_segment(
+      static_compliance, q0, q1, integrator.newton_tolerance() * gap_scale);
+    Vector<double> change(target);
+    change.add(-0.5, point_forces, -0.5, point_forces_new);
+    change -= applied;
+    const double scale =
+      std::max(point_forces.linfty_norm(), point_forces_new.linfty_norm());
+    if (change.linfty_norm() <= 1e-12 * scale)
+      change = 0.;
+    return change;
+  }
+
+  void
+  ContactStepper::update_stiffness_image()
+  {
+    if (op.has_damping() || exact_constraint)
+      {
+        // K u_new with u_new's constrained entries zeroed.
+        constraint_map.zeroed(u_new, work);
+        op.stiffness_matrix().vmult(stiffness_u, work);
+        return;
+      }
+    // The step solved A u1 = b + E_C P with A = cK K + cM M, so in the
+    // unconstrained rows K u1 = (b + E_C P - cM M u1) / cK: no product
+    // with K. (The constrained rows, which differ, are zeroed in u where
+    // it meets them and kept to themselves by the solve.)
+    stiffness_u = b;
+    if (contact_force.size() > 0)
+      solver->add_forces(contact_force, stiffness_u);
+    stiffness_u.add(-integrator.mass_coefficient(dt), mass_u_new);
+    stiffness_u /= integrator.stiffness_coefficient();
+  }
+
+  double
+  ContactStepper::damping_form(const PETScWrappers::MPI::Vector &x) const
+  {
+    constraint_map.zeroed(x, work);
+    op.damping_matrix().vmult(product, work);
+    return 0.5 * (work * product);
+  }
+
+  double
+  ContactStepper::time() const
+  {
+    return t;
+  }
+
+  const StateVector &
+  ContactStepper::displacement() const
+  {
+    return u;
+  }
+
+  const StateVector &
+  ContactStepper::velocity() const
+  {
+    return v;
+  }
+
+  const PETScWrappers::MPI::Vector &
+  ContactStepper::mass_times_velocity() const
+  {
+    return mass_v;
+  }
+
+  const PETScWrappers::MPI::Vector &
+  ContactStepper::stiffness_times_displacement() const
+  {
+    return stiffness_u;
+  }
+
+  unsigned int
+  ContactStepper::n_newton_iterations() const
+  {
+    return newton_iterations;
+  }
+
+  unsigned int
+  ContactStepper::n_factorizations() const
+  {
+    return factorizations_before + solver->n_factorizations();
+  }
+
+  unsigned int
+  ContactStepper::n_triangular_solves() const
+  {
+    return solves_before + solver->n_triangular_solves();
+  }
+
+  double
+  ContactStepper::triangular_solve_time() const
+  {
+    return (solve_time_before + solver->triangular_solve_time()) /
+           n_triangular_solves();
+  }
+
+  unsigned int
+  ContactStepper::n_contact_dofs() const
+  {
+    return solver->n_contact_dofs();
+  }
+} // namespace DiskImpact

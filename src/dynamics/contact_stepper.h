@@ -1,0 +1,200 @@
+#pragma once
+
+#include "contact/contact.h"
+#include "contact/contact_zone.h"
+#include "dynamics/condensed_solver.h"
+#include "dynamics/factorization.h"
+#include "dynamics/massless_zone.h"
+#include "dynamics/state_vector.h"
+#include "dynamics/time_integrator.h"
+#include "elasticity/constraint_map.h"
+#include "elasticity/elasticity_operator.h"
+#include "elasticity/interleaved_mass.h"
+
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/petsc_vector.h>
+#include <deal.II/lac/vector.h>
+
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace DiskImpact
+{
+  /**
+   * The time step of elastic bodies in contact (docs/theory/impact-method.md):
+   * the integrator's effective matrix factorized once per step size, the
+   * response without contact force by one solve, and the contact solved on
+   * the few DoFs it acts on (CondensedSolver): by Newton's method for a
+   * penalty-type law, by a complementarity problem for the exact
+   * constraint (with the energy-conserving scheme, the exact mean of the
+   * point forces along the step by Anderson-accelerated fixed point). A
+   * step whose contact solve fails is halved and refactorized.
+   *
+   * Built from the elasticity operator (with its constraints as a matrix
+   * and its mass product), the contact zone (with its law) and the
+   * integrator; @p exact_constraint chooses the solver of the exact
+   * constraint g >= 0 (ContactZone without a law). It knows nothing of the task
+   * that drives it. Times and lengths are in the operator's units.
+   */
+  class ContactStepper
+  {
+  public:
+    /// What one call of advance() did.
+    struct StepResult
+    {
+      /// False if the contact solve failed and the steps of this stepper
+      /// have been halved 'Maximum step cuts' times already; the state is
+      /// then unchanged.
+      bool converged = true;
+      /// The step taken (the one asked for, halved by each cut).
+      double dt = 0.;
+      /// Halvings in this call.
+      unsigned int cuts = 0;
+      /// The contact at the step's end; force_average is the step's mean
+      /// force (its impulse / dt).
+      ContactState state;
+      /// The viscous work of the step, dt v^T D v at the damping's
+      /// velocity (zero without damping).
+      double viscous_work = 0.;
+    };
+
+    /**
+     * @p factorization: where the effective matrix's factorization is kept,
+     * perhaps made by an earlier stepper on the same operators (it is then
+     * refactorized, keeping its pattern's part). @p gap_scale: the length
+     * the contact solve's 'Newton tolerance' is relative to (the largest
+     * approach expected). Collective.
+     */
+    ContactStepper(const ElasticityOperator       &op,
+                   const ConstraintMap            &constraint_map,
+                   const InterleavedMass          &mass_product,
+                   ContactZone                    &zone,
+                   const TimeIntegrator           &integrator,
+                   bool                            exact_constraint,
+                   std::shared_ptr<Factorization> &factorization,
+                   double                          gap_scale,
+                   MPI_Comm                        communicator);
+
+    /// Start from rest (u = a = 0) with the velocity @p velocity (its
+    /// constraints satisfied) and factorize for the step @p dt.
+    void
+    start(const dealii::PETScWrappers::MPI::Vector &velocity, double dt);
+
+    /// One step of size @p dt (refactorized if it differs from the last),
+    /// halved after each failed contact solve (at most 'Maximum step cuts'
+    /// halvings in all steps together).
+    StepResult
+    advance(double dt);
+
+    /// The time reached.
+    double
+    time() const;
+    const StateVector &
+    displacement() const;
+    const StateVector &
+    velocity() const;
+    /// M v and K u of the current state (constrained entries zeroed): the
+    /// kinetic and strain energies are v . (M v) / 2 and u . (K u) / 2.
+    const dealii::PETScWrappers::MPI::Vector &
+    mass_times_velocity() const;
+    const dealii::PETScWrappers::MPI::Vector &
+    stiffness_times_displacement() const;
+
+    /// Newton (or complementarity) iterations of all steps so far.
+    unsigned int
+    n_newton_iterations() const;
+    /// Factorizations and pairs of triangular solves so far, and their
+    /// mean time.
+    unsigned int
+    n_factorizations() const;
+    unsigned int
+    n_triangular_solves() const;
+    double
+    triangular_solve_time() const;
+    /// |C|: the contact DoFs the condensed solve holds.
+    unsigned int
+    n_contact_dofs() const;
+
+  private:
+    /// Factorize the effective matrix cm M + cd D + (1 - af) K for @p dt.
+    void
+    factorize(double dt);
+    /// The contact solve of one step from the current state; false if it
+    /// fails.
+    bool
+    attempt_step();
+    /// attempt_step() for a penalty-type law: Newton on C.
+    bool
+    attempt_penalty_step(const dealii::Vector<double> &y_D);
+    /// attempt_step() for the exact constraint: complementarity on the
+    /// points, and the mean point forces of the energy-conserving scheme.
+    bool
+    attempt_exact_constraint_step(const dealii::Vector<double> &y_D);
+    /// The end state's point forces from the complementarity problem on the
+    /// active points.
+    bool
+    attempt_constrained_step(const dealii::Vector<double> &y_D,
+                             dealii::Vector<double>       &u1_D,
+                             dealii::Vector<double>       &P);
+    /// For the end state @p u1_D: the exact mean of the point forces along
+    /// the step, less the trapezoidal mean, less the correction
+    /// @p applied so far (zero once below rounding).
+    dealii::Vector<double>
+    mean_force_correction(const dealii::Vector<double> &u1_D,
+                          const dealii::Vector<double> &applied) const;
+    /// The new state's velocity, acceleration, their mass images and K u.
+    void
+    complete_step();
+    /// K u_new into stiffness_u, from the step's linear system where it
+    /// holds, else by a product.
+    void
+    update_stiffness_image();
+    /// x^T D x / 2 (constrained entries ignored).
+    double
+    damping_form(const dealii::PETScWrappers::MPI::Vector &x) const;
+
+    const ElasticityOperator       &op;
+    const ConstraintMap            &constraint_map;
+    const InterleavedMass          &mass_product;
+    ContactZone                    &zone;
+    const TimeIntegrator           &integrator;
+    const bool                      exact_constraint;
+    std::shared_ptr<Factorization> &factorization;
+    const double                    gap_scale;
+    MPI_Comm                        communicator;
+
+    std::unique_ptr<CondensedSolver> solver;
+    double                           dt = 0., t = 0.;
+    /// The step's results so far (attempt_step()).
+    ContactState state;
+    unsigned int newton_iterations = 0;
+    /// Halvings of the step so far: at most 'Maximum step cuts' in all.
+    unsigned int cuts                  = 0;
+    unsigned int factorizations_before = 0, solves_before = 0;
+    double       solve_time_before = 0.;
+
+    StateVector                        u, v, a, u_new, v_new, a_new;
+    dealii::PETScWrappers::MPI::Vector b;
+    /// K u of the current state: for the strain energy and the next step's
+    /// right-hand side.
+    dealii::PETScWrappers::MPI::Vector stiffness_u;
+    /// The last step's contact force P on C (laws other than 'constraint').
+    dealii::Vector<double> contact_force;
+    /// M u, M v, M a (constrained entries zeroed) and their new values:
+    /// the Newmark relations are linear, so M v and M a follow from M u
+    /// by the same relations, one product with M per step.
+    StateVector mass_u, mass_v, mass_a, mass_u_new, mass_v_new, mass_a_new;
+    /// u on the contact candidates' DoFs, at the step's start and end.
+    dealii::Vector<double> u_D, u1_D_new;
+    /// Law 'constraint': the point forces at the step's start and end.
+    dealii::Vector<double> point_forces, point_forces_new;
+    /// With the energy-conserving scheme and the exact constraint: the
+    /// massless zone in equilibrium and the points' static compliance, for
+    /// the exact mean force.
+    std::unique_ptr<MasslessZone>                             massless;
+    std::vector<std::vector<std::pair<unsigned int, double>>> point_rows;
+    dealii::FullMatrix<double>                                static_compliance;
+    mutable dealii::PETScWrappers::MPI::Vector                work, product;
+  };
+} // namespace DiskImpact

@@ -1,0 +1,93 @@
+#include "restitution/dem_inputs.h"
+
+#include <iomanip>
+#include <regex>
+#include <sstream>
+
+namespace DiskImpact
+{
+  std::string
+  ten_digits(const double value)
+  {
+    std::ostringstream text;
+    text << std::setprecision(10) << value;
+    return text.str();
+  }
+
+  std::map<std::string, std::string>
+  dem_files(const DemInputs &d)
+  {
+    std::ostringstream head;
+    head << "# diskimpact restitution law (SI units): a sphere of radius "
+         << ten_digits(d.radius) << " m, density " << ten_digits(d.density)
+         << " kg/m^3, E = " << ten_digits(d.young)
+         << " Pa, nu = " << ten_digits(d.poisson)
+         << ".\n# At the reference speed " << ten_digits(d.speed)
+         << " m/s on a rigid wall (or two such spheres at relative speed "
+         << ten_digits(2. * d.speed)
+         << " m/s): epsilon = " << ten_digits(d.epsilon) << ", contact time "
+         << ten_digits(d.contact_time) << " s.\n";
+    std::map<std::string, std::string> files;
+    files["liggghts.txt"] =
+      head.str() +
+      "# LIGGGHTS, model hertz: its damping keeps epsilon constant in v; "
+      "coefficientRestitution\n# is the input for which LIGGGHTS' model "
+      "gives epsilon = " +
+      ten_digits(d.liggghts_epsilon) +
+      ".\n# A wall must have a much larger youngsModulus to act as the "
+      "rigid wall; 'hard_particles yes' allows E > 1e9 Pa.\n"
+      "hard_particles yes\n"
+      "fix m1 all property/global youngsModulus peratomtype " +
+      ten_digits(d.young) +
+      "\nfix m2 all property/global poissonsRatio peratomtype " +
+      ten_digits(d.poisson) +
+      "\nfix m3 all property/global coefficientRestitution peratomtypepair "
+      "1 " +
+      ten_digits(d.liggghts_restitution) +
+      "\nfix m4 all property/global coefficientFriction peratomtypepair 1 "
+      "0.0\npair_style gran model hertz tangential history\n"
+      "pair_coeff * *\n";
+    files["lammps.txt"] =
+      head.str() +
+      "# LAMMPS pair granular, Hertz with viscoelastic damping: Ramírez et "
+      "al.'s "
+      "law with the fitted A = " +
+      ten_digits(d.A) +
+      " s,\n# eta_n0 = 2 A E_eff / m_eff, the velocity dependence "
+      "included.\npair_style granular\npair_coeff * * hertz/material " +
+      ten_digits(d.young) + " " + ten_digits(d.lammps_damping) + " " +
+      ten_digits(d.poisson) +
+      " tangential linear_nohistory 0.0 0.0 damping viscoelastic\n";
+    files["yade.py"] =
+      "# Yade, ViscElMat (linear spring-dashpot from contact time and "
+      "restitution)\n" +
+      head.str() +
+      "# ViscElMat's force is never attractive: its epsilon exceeds en "
+      "and its contact time differs\n# from tc. These en, tc give the "
+      "epsilon and contact time above, at every speed.\n"
+      "mat = O.materials.append(ViscElMat(en=" +
+      ten_digits(d.yade.epsilon) +
+      ", et=0., tc=" + ten_digits(d.yade.contact_time) +
+      ", density=" + ten_digits(d.density) + ", frictionAngle=0.))\n";
+    files["mercurydpm.txt"] =
+      "// MercuryDPM, LinearViscoelasticSpecies (particle-wall; for two "
+      "such particles use mass / 2)\n" +
+      std::regex_replace(head.str(), std::regex("(^|\n)# "), "$1// ") +
+      "species.setDensity(" + ten_digits(d.density) +
+      ");\nspecies.setCollisionTimeAndRestitutionCoefficient(" +
+      ten_digits(d.contact_time) + ", " + ten_digits(d.epsilon) + ", " +
+      ten_digits(d.mass) + ");\n";
+    files["lethe.prm"] =
+      head.str() +
+      "# Lethe (lethe-particles), subsection lagrangian physical "
+      "properties, particle type 0:\n"
+      "set diameter                          = " +
+      ten_digits(2. * d.radius) +
+      "\nset density particles                 = " + ten_digits(d.density) +
+      "\nset young modulus particles           = " + ten_digits(d.young) +
+      "\nset poisson ratio particles           = " + ten_digits(d.poisson) +
+      "\nset restitution coefficient particles = " + ten_digits(d.epsilon) +
+      "\n";
+    return files;
+  }
+} // namespace DiskImpact

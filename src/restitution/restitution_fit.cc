@@ -1,0 +1,76 @@
+#include "restitution/restitution_fit.h"
+
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/householder.h>
+#include <deal.II/lac/vector.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace DiskImpact
+{
+  using namespace dealii;
+
+  double
+  SmoothFit::operator()(const double v) const
+  {
+    const double x   = std::pow(v / v_ref, 0.2);
+    double       sum = 0., power = 1.;
+    for (const double coefficient : a)
+      sum += coefficient * (power *= x);
+    return 1. - sum;
+  }
+
+  std::vector<double>
+  fit_weights(const std::vector<double> &error)
+  {
+    std::vector<double> finite;
+    for (const double e : error)
+      if (e > 0. && std::isfinite(e))
+        finite.push_back(e);
+    std::sort(finite.begin(), finite.end());
+    const double typical = finite.empty() ? 1. : finite[finite.size() / 2];
+    std::vector<double> w;
+    for (const double e : error)
+      w.push_back(1. / (e > 0. && std::isfinite(e) ? e : typical));
+    return w;
+  }
+
+  SmoothFit
+  fit_smooth(const RestitutionTable &table,
+             const double            v_ref,
+             unsigned int            terms)
+  {
+    const unsigned int n = table.v.size();
+    terms                = std::min<unsigned int>(terms, std::max(1u, n - 1));
+    const auto         w = fit_weights(table.error);
+    FullMatrix<double> design(n, terms);
+    Vector<double>     rhs(n), a(terms);
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const double x     = std::pow(table.v[i] / v_ref, 0.2);
+        double       power = 1.;
+        for (unsigned int k = 0; k < terms; ++k)
+          design(i, k) = w[i] * (power *= x);
+        rhs[i] = w[i] * (1. - table.epsilon[i]);
+      }
+    Householder<double>(design).least_squares(a, rhs);
+    return {v_ref, std::vector<double>(a.begin(), a.end())};
+  }
+
+  double
+  interpolate_in_log(const std::vector<double> &x,
+                     const std::vector<double> &y,
+                     const double               x0)
+  {
+    if (x0 <= x.front())
+      return y.front();
+    for (unsigned int i = 1; i < x.size(); ++i)
+      if (x0 <= x[i])
+        {
+          const double s = std::log(x0 / x[i - 1]) / std::log(x[i] / x[i - 1]);
+          return (1. - s) * y[i - 1] + s * y[i];
+        }
+    return y.back();
+  }
+} // namespace DiskImpact
