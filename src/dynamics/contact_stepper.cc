@@ -396,6 +396,15 @@ namespace DiskImpact
     return 0.5 * (work * product);
   }
 
+  void
+  ContactStepper::refactorize()
+  {
+    factorize(dt);
+    // K u of the current state with the new K.
+    constraint_map.zeroed(u, work);
+    op.stiffness_matrix().vmult(stiffness_u, work);
+  }
+
   double
   ContactStepper::time() const
   {

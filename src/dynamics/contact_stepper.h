@@ -87,6 +87,13 @@ namespace DiskImpact
     StepResult
     advance(double dt);
 
+    /// Refactorize the effective matrix from the operator's matrices as
+    /// they are now: after a material whose stiffness changes
+    /// (ConstitutiveLaw::changes_stiffness()) has had K reassembled.
+    /// Collective.
+    void
+    refactorize();
+
     /// The time reached.
     double
     time() const;

@@ -77,6 +77,7 @@ namespace DiskImpact
     const bool                                     with_tangent,
     const std::vector<Point<2>>                   &axial_pins)
   {
+    point_states.clear();
     section = Section(geometry.is_axisymmetric());
     fe      = std::make_unique<FESystem<2>>(FE_Q<2>(fe_degree), 2);
     distribute_dofs(triangulation, *fe);
@@ -288,10 +289,14 @@ namespace DiskImpact
              (material.lame_lambda() + 2. * material.shear_modulus()) * h_i *
                h_j;
     };
-    with_damping =
-      std::any_of(materials.begin(), materials.end(), [](const Material &m) {
-        return m.is_viscous();
-      });
+    // K and D from each body's constitutive law at the quadrature points,
+    // whose states are kept from one assembly to the next.
+    laws.clear();
+    for (const Material &material : materials)
+      laws.push_back(make_constitutive_law(material));
+    with_damping = std::any_of(laws.begin(), laws.end(), [](const auto &law) {
+      return law->is_viscous();
+    });
     if (with_damping)
       {
         damping.reinit(stiffness);
@@ -318,11 +323,13 @@ namespace DiskImpact
           const unsigned int which =
             materials.size() == 1 ? 0 : cell->material_id();
           AssertIndexRange(which, materials.size());
-          const Material             &material = materials[which];
-          const SymmetricTensor<4, 2> c        = material.stiffness_tensor();
-          const SymmetricTensor<4, 2> d        = material.damping_tensor();
-          const double                rho      = material.density();
-          const double                tau      = material.relaxation_time();
+          const Material        &material = materials[which];
+          const ConstitutiveLaw &law      = *laws[which];
+          const double           rho      = material.density();
+          const double           tau      = material.relaxation_time();
+          if (!point_states.try_get_data(cell))
+            law.initialize_states(point_states, cell, quadrature.size());
+          const auto states = point_states.get_data(cell);
           fe_values.reinit(cell);
           cell_mass      = 0.;
           cell_stiffness = 0.;
@@ -342,6 +349,10 @@ namespace DiskImpact
                   trace[i] = dealii::trace(eps[i]);
                 }
               const double dx = fe_values.JxW(q) * section.measure(x);
+              const SymmetricTensor<4, 2> c = law.stiffness_tangent(*states[q]);
+              const SymmetricTensor<4, 2> d =
+                with_damping ? law.damping_tangent(*states[q]) :
+                               SymmetricTensor<4, 2>();
               for (unsigned int i = 0; i < dofs_per_cell; ++i)
                 {
                   const SymmetricTensor<2, 2> c_eps_i = c * eps[i];
@@ -384,6 +395,19 @@ namespace DiskImpact
     stiffness.compress(VectorOperation::add);
     if (with_damping)
       damping.compress(VectorOperation::add);
+  }
+
+  const ConstitutiveLaw &
+  ElasticityOperator::constitutive_law(const unsigned int body) const
+  {
+    AssertIndexRange(body, laws.size());
+    return *laws[body];
+  }
+
+  QuadraturePointStates &
+  ElasticityOperator::quadrature_point_states()
+  {
+    return point_states;
   }
 
   bool

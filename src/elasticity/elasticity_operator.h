@@ -2,6 +2,7 @@
 
 #include "elasticity/discrete_operator.h"
 #include "elasticity/section.h"
+#include "material/constitutive_law.h"
 #include "material/material.h"
 
 #include <deal.II/base/index_set.h>
@@ -151,6 +152,14 @@ namespace DiskImpact
     /// Planar or axisymmetric (set by setup() from the geometry).
     const Section &
     get_section() const;
+    /// The constitutive law of each body (by material id), as assemble()
+    /// made them.
+    const ConstitutiveLaw &
+    constitutive_law(unsigned int body = 0) const;
+    /// The laws' states at the quadrature points of the locally owned
+    /// cells (the order of assemble()'s QGauss(degree + 1)).
+    QuadraturePointStates &
+    quadrature_point_states();
     const dealii::PETScWrappers::MPI::SparseMatrix &
     damping_matrix() const;
 
@@ -178,5 +187,8 @@ namespace DiskImpact
     dealii::PETScWrappers::MPI::SparseMatrix tangent;
     dealii::PETScWrappers::MPI::SparseMatrix damping;
     bool                                     with_damping = false;
+    /// Each body's law, and the laws' states at the quadrature points.
+    std::vector<std::unique_ptr<ConstitutiveLaw>> laws;
+    QuadraturePointStates                         point_states;
   };
 } // namespace DiskImpact

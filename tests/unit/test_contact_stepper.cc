@@ -381,3 +381,51 @@ TEST_CASE("contact points carry the tangential displacement and a history",
   zone->history(0).slip = 0.25;
   CHECK(zone->history(0).slip == 0.25);
 }
+
+TEST_CASE("a refactorized stepper goes on as before", "[stepper][fe]")
+{
+  // refactorize() rebuilds the factorization and K u from the operator's
+  // matrices, for a material whose stiffness changed. With K unchanged the
+  // steps after it equal those of a stepper that did not refactorize, to
+  // rounding (K u by a product instead of the step's linear system).
+  SteppingBody plain("energy conserving"), refreshed("energy conserving");
+  auto         plain_zone = plain.zone(), refreshed_zone = refreshed.zone();
+  auto a = plain.stepper(*plain_zone), b = refreshed.stepper(*refreshed_zone);
+  a->start(plain.approaching(speed), step);
+  b->start(refreshed.approaching(speed), step);
+  for (unsigned int n = 0; n < 20; ++n)
+    {
+      if (n == 10)
+        b->refactorize();
+      REQUIRE(a->advance(step).converged);
+      REQUIRE(b->advance(step).converged);
+    }
+  CHECK(b->n_factorizations() == a->n_factorizations() + 1);
+  auto difference = a->displacement();
+  difference.add(-1., b->displacement());
+  CHECK(difference.linfty_norm() <= 1e-10 * a->displacement().linfty_norm());
+}
+
+TEST_CASE("the operator keeps its law's state at every quadrature point",
+          "[material][fe]")
+{
+  // Q2 elements, QGauss(3): nine states per locally owned cell, made by the
+  // body's law (linear elastic here), kept by a second assembly.
+  SteppingBody body("energy conserving");
+  auto        &states = body.op.quadrature_point_states();
+  CHECK_FALSE(body.op.constitutive_law().is_viscous());
+  std::vector<const QuadraturePointState *> first;
+  for (const auto &cell : body.triangulation.active_cell_iterators())
+    if (cell->is_locally_owned())
+      for (const auto &state : states.get_data(cell))
+        first.push_back(state.get());
+  CHECK(first.size() == 9 * body.triangulation.n_locally_owned_active_cells());
+  Material material;
+  material.set(PlaneModel::plane_stress, 1., 0.3, 1., 0.);
+  body.op.assemble(material);
+  unsigned int k = 0;
+  for (const auto &cell : body.triangulation.active_cell_iterators())
+    if (cell->is_locally_owned())
+      for (const auto &state : states.get_data(cell))
+        CHECK(state.get() == first[k++]);
+}

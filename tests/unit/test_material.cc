@@ -2,6 +2,7 @@
 // formulas, and the in-plane mapping of Gerl & Zippelius 1999, eq. 2.
 
 #include "base/input_error.h"
+#include "material/constitutive_law.h"
 #include "material/material.h"
 
 #include <deal.II/base/symmetric_tensor.h>
@@ -122,4 +123,28 @@ TEST_CASE("invalid constants are rejected", "[material]")
   CHECK_THROWS_AS(m.set(PlaneModel::plane_stress, 1., 0.3, 1., -1.),
                   InputError);
   CHECK_NOTHROW(m.set(PlaneModel::plane_stress, 1., 0.5, 1.));
+}
+
+TEST_CASE("constitutive laws give the material's tangents", "[material]")
+{
+  // The elastic law's C is the material's, its D zero; Kelvin-Voigt adds
+  // the material's D; neither changes its stiffness along a run.
+  Material elastic, viscous;
+  elastic.set(PlaneModel::plane_strain, 2., 0.3, 1.);
+  viscous.set(PlaneModel::plane_stress, 2., 0.3, 1., 0.05);
+  const QuadraturePointState state;
+  const auto                 law = make_constitutive_law(elastic);
+  CHECK_FALSE(law->is_viscous());
+  CHECK_FALSE(law->changes_stiffness());
+  CHECK(tensor_difference(law->stiffness_tangent(state),
+                          elastic.stiffness_tensor()) == 0.);
+  CHECK(law->damping_tangent(state).norm() == 0.);
+
+  const auto kelvin_voigt = make_constitutive_law(viscous);
+  CHECK(kelvin_voigt->is_viscous());
+  CHECK(dynamic_cast<const KelvinVoigtLaw *>(kelvin_voigt.get()));
+  CHECK(tensor_difference(kelvin_voigt->stiffness_tangent(state),
+                          viscous.stiffness_tensor()) == 0.);
+  CHECK(tensor_difference(kelvin_voigt->damping_tangent(state),
+                          viscous.damping_tensor()) == 0.);
 }
