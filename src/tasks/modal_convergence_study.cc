@@ -221,8 +221,15 @@ namespace DiskImpact
                           "(modal_convergence.csv).";
       task.traits.modal = true;
       task.result_files = {"modal_convergence.csv"};
+      task.declare_parameters = ModalConvergenceStudy::declare_parameters;
+      task.parse_parameters   = [](ParameterHandler &prm) {
+        ModalConvergenceStudy own;
+        own.parse_parameters(prm);
+        return std::any(own);
+      };
       task.run = [](const Parameters &parameters, bool, MPI_Comm communicator) {
-        parameters.modal_convergence.run(parameters, communicator);
+        parameters.task_parameters<ModalConvergenceStudy>().run(parameters,
+                                                                communicator);
       };
       task.build_largest_mesh = [](const Parameters &parameters,
                                    Triangulation<2> &mesh,
@@ -231,11 +238,13 @@ namespace DiskImpact
                    "'Degrees'",
                    [&]() {
                      const Parameters finest =
-                       parameters.modal_convergence.finest(parameters);
+                       parameters.task_parameters<ModalConvergenceStudy>()
+                         .finest(parameters);
                      finest.geometry.create_triangulation(
                        mesh, cell_budget(finest.finite_element.degree));
                    });
-        check_mode_count(parameters.modal_convergence.coarsest(parameters),
+        check_mode_count(parameters.task_parameters<ModalConvergenceStudy>()
+                           .coarsest(parameters),
                          "Modal convergence: 'Modes compared' on the "
                          "coarsest of 'Refinement levels' and 'Degrees'");
       };

@@ -74,15 +74,11 @@ namespace DiskImpact
     Partner::declare_parameters(prm);
     FiniteElementParameters::declare_parameters(prm);
     ModalSolver::declare_parameters(prm);
-    ModalConvergenceStudy::declare_parameters(prm);
     ContactParameters::declare_parameters(prm);
-    QuasistaticContact::declare_parameters(prm);
     TimeIntegrator::declare_parameters(prm);
     Impact::declare_parameters(prm);
     ImpactConvergenceStudy::declare_parameters(prm);
-    ReferenceModels::declare_parameters(prm);
-    ModalExpansionStudy::declare_parameters(prm);
-    RestitutionLaw::declare_parameters(prm);
+    Tasks::declare_own_parameters(prm);
   }
 
   void
@@ -120,15 +116,18 @@ namespace DiskImpact
     partner.parse_parameters(prm, geometry, material);
     finite_element.parse_parameters(prm);
     modal_solver.parse_parameters(prm);
-    modal_convergence.parse_parameters(prm);
     contact.parse_parameters(prm);
-    quasistatic_contact.parse_parameters(prm);
     time_integrator.parse_parameters(prm);
     impact.parse_parameters(prm);
     impact_convergence.parse_parameters(prm);
-    reference_models.parse_parameters(prm);
-    modal_expansion.parse_parameters(prm);
-    restitution_law.parse_parameters(prm);
+    // Every task's own subsection is checked; the chosen task's is kept.
+    for (const auto &entry : Tasks::all())
+      if (entry.parse_parameters)
+        {
+          std::any parsed = entry.parse_parameters(prm);
+          if (entry.name == run.task)
+            own_parameters = std::move(parsed);
+        }
 
     require(geometry.is_axisymmetric() || impact.revolved_view() == 0.,
             "Impact: 'Revolved view' is a sphere's 3D view; a disk's "

@@ -12,15 +12,11 @@
 #include "modal/modal_solver.h"
 #include "tasks/impact.h"
 #include "tasks/impact_convergence_study.h"
-#include "tasks/modal_convergence_study.h"
-#include "tasks/modal_expansion_task.h"
-#include "tasks/quasistatic_contact.h"
-#include "tasks/reference_models_task.h"
-#include "tasks/restitution_law.h"
 #include "tasks/task_registry.h"
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <any>
 #include <string>
 #include <vector>
 
@@ -49,6 +45,13 @@ namespace DiskImpact
     /// The task 'Task' names.
     const TaskEntry &
     task() const;
+    /// The task's own subsection as its entry parsed it (a @p T).
+    template <typename T>
+    const T &
+    task_parameters() const
+    {
+      return std::any_cast<const T &>(own_parameters);
+    }
 
     RunParameters           run;
     UnitSystem              units;
@@ -57,15 +60,13 @@ namespace DiskImpact
     Partner                 partner;
     FiniteElementParameters finite_element;
     ModalSolver             modal_solver;
-    ModalConvergenceStudy   modal_convergence;
     ContactParameters       contact;
-    QuasistaticContact      quasistatic_contact;
     TimeIntegrator          time_integrator;
     Impact                  impact;
     ImpactConvergenceStudy  impact_convergence;
-    ReferenceModels         reference_models;
-    ModalExpansionStudy     modal_expansion;
-    RestitutionLaw          restitution_law;
+
+    /// The task's own subsection, parsed (TaskEntry::parse_parameters).
+    std::any own_parameters;
 
     /// Warnings about the combination of entries (e.g. elements that lock),
     /// one line each, for main() to print; the run goes on.

@@ -120,9 +120,8 @@ namespace DiskImpact
         , op(parameters.finite_element.degree)
     {
       const auto &geometry = parameters.geometry;
-      parameters.quasistatic_contact.create_mesh(parameters,
-                                                 load,
-                                                 triangulation);
+      parameters.task_parameters<QuasistaticContact>().create_mesh(
+        parameters, load, triangulation);
       op.setup(triangulation, geometry, true);
       op.assemble(parameters.material);
 
@@ -637,8 +636,15 @@ namespace DiskImpact
                                   "contact.pvd",
                                   "contact_*.vtu",
                                   "contact_*.pvtu"};
+      task.declare_parameters  = QuasistaticContact::declare_parameters;
+      task.parse_parameters    = [](ParameterHandler &prm) {
+        QuasistaticContact own;
+        own.parse_parameters(prm);
+        return std::any(own);
+      };
       task.run = [](const Parameters &parameters, bool, MPI_Comm communicator) {
-        parameters.quasistatic_contact.run(parameters, communicator);
+        parameters.task_parameters<QuasistaticContact>().run(parameters,
+                                                             communicator);
       };
       task.check = [](const Parameters &parameters) {
         require(parameters.geometry.is_half_disk(),
@@ -653,9 +659,9 @@ namespace DiskImpact
       task.build_largest_mesh = [](const Parameters &parameters,
                                    Triangulation<2> &mesh,
                                    const auto       &cell_budget) {
-        parameters.quasistatic_contact.create_mesh(
+        parameters.task_parameters<QuasistaticContact>().create_mesh(
           parameters,
-          parameters.quasistatic_contact.largest_load(),
+          parameters.task_parameters<QuasistaticContact>().largest_load(),
           mesh,
           cell_budget(parameters.finite_element.degree));
       };

@@ -6,6 +6,7 @@
 #include "reference/wall_contact_theory.h"
 #include "tasks/impact.h"
 #include "tasks/parameters.h"
+#include "tasks/quasistatic_contact.h"
 
 #include <deal.II/base/utilities.h>
 
@@ -46,7 +47,9 @@ namespace DiskImpact
                        Reference::two_sphere_approach(total_force, b1, b2) :
                        Reference::two_disk_approach(total_force, b1, b2);
 
-    parameters.quasistatic_contact.create_mesh(parameters, load, triangulation);
+    parameters.task_parameters<QuasistaticContact>().create_mesh(parameters,
+                                                                 load,
+                                                                 triangulation);
     // The far poles hold the bodies' translations (they carry no force in
     // the solution, see the class comment).
     op.setup(triangulation,

@@ -467,15 +467,23 @@ namespace DiskImpact
       task.traits.meshes = false;
       task.traits.sphere = false;
       task.result_files  = {"reference_*.csv"};
+      task.declare_parameters = ReferenceModels::declare_parameters;
+      task.parse_parameters   = [](ParameterHandler &prm) {
+        ReferenceModels own;
+        own.parse_parameters(prm);
+        return std::any(own);
+      };
       task.run = [](const Parameters &parameters, bool, MPI_Comm communicator) {
-        parameters.reference_models.run(parameters, communicator);
+        parameters.task_parameters<ReferenceModels>().run(parameters,
+                                                          communicator);
       };
       task.check = [](const Parameters &parameters) {
-        parameters.reference_models.check_velocities(
+        parameters.task_parameters<ReferenceModels>().check_velocities(
           parameters.impact.contact_law_constant_value(parameters));
       };
       task.kept_results = [](const Parameters &parameters) {
-        return parameters.reference_models.other_models_files();
+        return parameters.task_parameters<ReferenceModels>()
+          .other_models_files();
       };
       return task;
     }

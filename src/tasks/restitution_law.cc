@@ -342,10 +342,18 @@ namespace DiskImpact
       task.run = [](const Parameters &parameters,
                     const bool        resume,
                     MPI_Comm          communicator) {
-        parameters.restitution_law.run(parameters, resume, communicator);
+        parameters.task_parameters<RestitutionLaw>().run(parameters,
+                                                         resume,
+                                                         communicator);
       };
       task.check              = check_sweep;
       task.build_largest_mesh = build_fastest_mesh;
+      task.declare_parameters = RestitutionLaw::declare_parameters;
+      task.parse_parameters   = [](ParameterHandler &prm) {
+        RestitutionLaw own;
+        own.parse_parameters(prm);
+        return std::any(own);
+      };
       return task;
     }
   } // namespace

@@ -51,13 +51,19 @@ namespace DiskImpact
         {
           names += (names.empty() ? "" : "|") + name;
           descriptions += " '" + name + "': " + entry.description;
-          if (entry.declare_parameters)
-            entry.declare_parameters(prm);
         }
       prm.declare_entry("Task",
                         "modal analysis",
                         dealii::Patterns::Selection(names),
                         "What to compute." + descriptions);
+    }
+
+    void
+    declare_own_parameters(dealii::ParameterHandler &prm)
+    {
+      for (const auto &[name, entry] : registry())
+        if (entry.declare_parameters)
+          entry.declare_parameters(prm);
     }
   } // namespace Tasks
 } // namespace DiskImpact

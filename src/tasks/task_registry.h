@@ -6,6 +6,7 @@
 
 #include <mpi.h>
 
+#include <any>
 #include <functional>
 #include <string>
 #include <vector>
@@ -41,8 +42,8 @@ namespace DiskImpact
    *   DISKIMPACT_REGISTER_TASK(make_entry())
    *
    * giving its name, description, traits, result files and functions;
-   * nothing else names it. A task's own subsection is declared by
-   * @p declare_parameters; the subsections several tasks share belong to
+   * nothing else names it. A task's own subsection is declared and parsed
+   * by its entry; the subsections several tasks share belong to
    * Parameters.
    */
   struct TaskEntry
@@ -71,8 +72,11 @@ namespace DiskImpact
     /// a resumed sweep's table; optional.
     std::function<std::vector<std::string>(const Parameters &parameters)>
       kept_results;
-    /// Its own subsection; optional.
-    std::function<void(dealii::ParameterHandler &prm)> declare_parameters;
+    /// Its own subsection: declared with the others, parsed (and checked)
+    /// in every run, kept in Parameters for the run of this task, which
+    /// reads it back with Parameters::task_parameters<T>(); optional.
+    std::function<void(dealii::ParameterHandler &prm)>     declare_parameters;
+    std::function<std::any(dealii::ParameterHandler &prm)> parse_parameters;
   };
 
   /// The registry of tasks, by name.
@@ -87,9 +91,12 @@ namespace DiskImpact
     /// The task named @p name; an InputError if there is none.
     const TaskEntry &
     get(const std::string &name);
-    /// Declare 'Task' (the names registered) and each task's subsection.
+    /// Declare 'Task' (the names registered).
     void
     declare_parameters(dealii::ParameterHandler &prm);
+    /// Declare each task's own subsection.
+    void
+    declare_own_parameters(dealii::ParameterHandler &prm);
   } // namespace Tasks
 } // namespace DiskImpact
 
