@@ -221,12 +221,7 @@ namespace DiskImpact
                           "(modal_convergence.csv).";
       task.traits.modal = true;
       task.result_files = {"modal_convergence.csv"};
-      task.declare_parameters = ModalConvergenceStudy::declare_parameters;
-      task.parse_parameters   = [](ParameterHandler &prm) {
-        ModalConvergenceStudy own;
-        own.parse_parameters(prm);
-        return std::any(own);
-      };
+      add_own_parameters<ModalConvergenceStudy>(task);
       task.run = [](const Parameters &parameters, bool, MPI_Comm communicator) {
         parameters.task_parameters<ModalConvergenceStudy>().run(parameters,
                                                                 communicator);

@@ -445,23 +445,18 @@ namespace DiskImpact
     modal_expansion_task()
     {
       TaskEntry task;
-      task.name               = "modal expansion impact";
-      task.description        = "the impact in the modal expansion of Gerl & "
-                                "Zippelius 1999 with its smooth wall potential, "
-                                "extrapolated to all modes and hard contact "
-                                "(subsection Modal expansion, modal_expansion.csv, "
-                                "modal_extrapolation.csv).";
-      task.traits.meshes      = false;
-      task.traits.sphere      = false;
-      task.result_files       = {"modal_expansion.csv",
-                                 "modal_expansion_modes.csv",
-                                 "modal_extrapolation.csv"};
-      task.declare_parameters = ModalExpansionStudy::declare_parameters;
-      task.parse_parameters   = [](ParameterHandler &prm) {
-        ModalExpansionStudy own;
-        own.parse_parameters(prm);
-        return std::any(own);
-      };
+      task.name          = "modal expansion impact";
+      task.description   = "the impact in the modal expansion of Gerl & "
+                           "Zippelius 1999 with its smooth wall potential, "
+                           "extrapolated to all modes and hard contact "
+                           "(subsection Modal expansion, modal_expansion.csv, "
+                           "modal_extrapolation.csv).";
+      task.traits.meshes = false;
+      task.traits.sphere = false;
+      task.result_files  = {"modal_expansion.csv",
+                            "modal_expansion_modes.csv",
+                            "modal_extrapolation.csv"};
+      add_own_parameters<ModalExpansionStudy>(task);
       task.run = [](const Parameters &parameters, bool, MPI_Comm communicator) {
         parameters.task_parameters<ModalExpansionStudy>().run(parameters,
                                                               communicator);

@@ -636,12 +636,7 @@ namespace DiskImpact
                                   "contact.pvd",
                                   "contact_*.vtu",
                                   "contact_*.pvtu"};
-      task.declare_parameters  = QuasistaticContact::declare_parameters;
-      task.parse_parameters    = [](ParameterHandler &prm) {
-        QuasistaticContact own;
-        own.parse_parameters(prm);
-        return std::any(own);
-      };
+      add_own_parameters<QuasistaticContact>(task);
       task.run = [](const Parameters &parameters, bool, MPI_Comm communicator) {
         parameters.task_parameters<QuasistaticContact>().run(parameters,
                                                              communicator);

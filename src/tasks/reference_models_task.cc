@@ -467,12 +467,7 @@ namespace DiskImpact
       task.traits.meshes = false;
       task.traits.sphere = false;
       task.result_files  = {"reference_*.csv"};
-      task.declare_parameters = ReferenceModels::declare_parameters;
-      task.parse_parameters   = [](ParameterHandler &prm) {
-        ReferenceModels own;
-        own.parse_parameters(prm);
-        return std::any(own);
-      };
+      add_own_parameters<ReferenceModels>(task);
       task.run = [](const Parameters &parameters, bool, MPI_Comm communicator) {
         parameters.task_parameters<ReferenceModels>().run(parameters,
                                                           communicator);

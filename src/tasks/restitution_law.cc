@@ -348,12 +348,7 @@ namespace DiskImpact
       };
       task.check              = check_sweep;
       task.build_largest_mesh = build_fastest_mesh;
-      task.declare_parameters = RestitutionLaw::declare_parameters;
-      task.parse_parameters   = [](ParameterHandler &prm) {
-        RestitutionLaw own;
-        own.parse_parameters(prm);
-        return std::any(own);
-      };
+      add_own_parameters<RestitutionLaw>(task);
       return task;
     }
   } // namespace

@@ -79,6 +79,23 @@ namespace DiskImpact
     std::function<std::any(dealii::ParameterHandler &prm)> parse_parameters;
   };
 
+  /**
+   * Give @p task the subsection of the parameter class @p Own (a static
+   * declare_parameters(prm) and a member parse_parameters(prm)), which the
+   * task reads back with Parameters::task_parameters<Own>().
+   */
+  template <typename Own>
+  void
+  add_own_parameters(TaskEntry &task)
+  {
+    task.declare_parameters = Own::declare_parameters;
+    task.parse_parameters   = [](dealii::ParameterHandler &prm) {
+      Own own;
+      own.parse_parameters(prm);
+      return std::any(own);
+    };
+  }
+
   /// The registry of tasks, by name.
   namespace Tasks
   {
