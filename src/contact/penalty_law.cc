@@ -77,9 +77,4 @@ namespace DiskImpact
     return kappa;
   }
 
-  double
-  PenaltyLaw::stiffness() const
-  {
-    return k;
-  }
 } // namespace DiskImpact

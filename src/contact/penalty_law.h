@@ -35,9 +35,6 @@ namespace DiskImpact
 
     double
     penalty_factor() const;
-    /// k [force / length^3].
-    double
-    stiffness() const;
 
   private:
     double kappa = 100.;

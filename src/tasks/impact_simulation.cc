@@ -111,7 +111,6 @@ namespace DiskImpact
       , communicator(communicator)
       , with_outputs(write_outputs)
       , radius(parameters.geometry.radius())
-      , in_plane_modulus(parameters.material.in_plane_young_modulus())
       , velocity_unit(parameters.material.velocity_unit())
       , impact_speed(impact.velocity() * velocity_unit)
       , body_mass(parameters.material.density() * parameters.geometry.volume())

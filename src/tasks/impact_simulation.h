@@ -106,11 +106,10 @@ namespace DiskImpact
     const Impact     &impact;
     MPI_Comm          communicator;
     const bool        with_outputs;
-    double            radius;           ///< R
-    double            in_plane_modulus; ///< E2 (E* of a sphere)
-    double            velocity_unit;    ///< c
-    double            impact_speed;     ///< v_i
-    double            body_mass;        ///< the whole body's mass
+    double            radius;        ///< R
+    double            velocity_unit; ///< c
+    double            impact_speed;  ///< v_i
+    double            body_mass;     ///< the whole body's mass
     /// The whole body's loads over the computed domain's: 2 on a half
     /// disk, 1 on a whole disk or a sphere (its meridian's integrals are
     /// over the whole sphere).
