@@ -3,7 +3,7 @@
 
 #include "base/input_error.h"
 #include "base/run_error.h"
-#include "tasks/parameters.h"
+#include "run/parameters.h"
 #include "tasks/task_runner.h"
 
 #include <deal.II/base/exceptions.h>

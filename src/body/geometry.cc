@@ -18,14 +18,15 @@ namespace DiskImpact
 {
   using namespace dealii;
 
+  template <int dim>
   void
-  refine_toward_contact(Triangulation<2>  &triangulation,
-                        const Point<2>    &contact_point,
-                        const double       a,
-                        const unsigned int n_across,
-                        const double       grading,
-                        const double       fine_zone_radius,
-                        const double       max_cells)
+  refine_toward_contact(Triangulation<dim> &triangulation,
+                        const Point<dim>   &contact_point,
+                        const double        a,
+                        const unsigned int  n_across,
+                        const double        grading,
+                        const double        fine_zone_radius,
+                        const double        max_cells)
   {
     const double h_min = a / n_across;
     for (unsigned int step = 0; step < 60; ++step)
@@ -41,7 +42,7 @@ namespace DiskImpact
         for (const auto &cell : triangulation.active_cell_iterators())
           if (cell->is_locally_owned())
             {
-              const double h = cell->diameter() / std::sqrt(2.);
+              const double h = cell->diameter() / std::sqrt(double(dim));
               const double d =
                 std::max(0., cell->center().distance(contact_point) - h);
               const double target =
@@ -57,6 +58,23 @@ namespace DiskImpact
         triangulation.execute_coarsening_and_refinement();
       }
   }
+
+  template void
+  refine_toward_contact(Triangulation<2> &,
+                        const Point<2> &,
+                        double,
+                        unsigned int,
+                        double,
+                        double,
+                        double);
+  template void
+  refine_toward_contact(Triangulation<3> &,
+                        const Point<3> &,
+                        double,
+                        unsigned int,
+                        double,
+                        double,
+                        double);
 
   std::string
   to_string(const Body body)
@@ -120,10 +138,10 @@ namespace DiskImpact
   {
     prm.enter_subsection("Geometry");
     body_kind   = prm.get("Body") == "sphere" ? Body::sphere : Body::disk;
-    disk_radius = prm.get_double("Radius");
+    body_radius = prm.get_double("Radius");
     const std::string domain = prm.get("Domain");
-    half_disk = body_kind == Body::sphere || domain == "half disk" ||
-                (domain.empty() && half_disk_by_default);
+    symmetry_boundary = body_kind == Body::sphere || domain == "half disk" ||
+                        (domain.empty() && half_disk_by_default);
     mesh_file             = prm.get("Mesh file");
     n_global_refinements  = prm.get_integer("Global refinements");
     n_contact_refinements = prm.get_integer("Contact refinements");
@@ -133,9 +151,9 @@ namespace DiskImpact
             "Geometry: 'Domain = " + domain +
               "' is a disk entry; a sphere's domain is always its meridian "
               "(remove 'Domain')");
-    require(disk_radius > 0,
+    require(body_radius > 0,
             "Geometry: 'Radius' must be positive, got " +
-              std::to_string(disk_radius));
+              std::to_string(body_radius));
     if (!mesh_file.empty())
       require(std::filesystem::is_regular_file(mesh_file),
               "Geometry: mesh file '" + mesh_file + "' " +
@@ -146,7 +164,7 @@ namespace DiskImpact
   double
   BodyGeometry::radius() const
   {
-    return disk_radius;
+    return body_radius;
   }
 
   Body
@@ -162,29 +180,29 @@ namespace DiskImpact
   }
 
   bool
-  BodyGeometry::is_half_disk() const
+  BodyGeometry::has_symmetry_boundary() const
   {
-    return half_disk;
+    return symmetry_boundary;
   }
 
   double
   BodyGeometry::domain_share() const
   {
-    return half_disk && body_kind == Body::disk ? 0.5 : 1.;
+    return symmetry_boundary && body_kind == Body::disk ? 0.5 : 1.;
   }
 
   double
   BodyGeometry::volume() const
   {
     return body_kind == Body::sphere ?
-             4. / 3. * M_PI * std::pow(disk_radius, 3) :
-             M_PI * disk_radius * disk_radius;
+             4. / 3. * M_PI * std::pow(body_radius, 3) :
+             M_PI * body_radius * body_radius;
   }
 
   Point<2>
   BodyGeometry::center() const
   {
-    return Point<2>(disk_radius, 0.);
+    return Point<2>(body_radius, 0.);
   }
 
   Point<2>
@@ -215,9 +233,9 @@ namespace DiskImpact
   BodyGeometry::description() const
   {
     return std::string(body_kind == Body::sphere ? "sphere (meridian)" :
-                       half_disk                 ? "half disk" :
+                       symmetry_boundary         ? "half disk" :
                                                    "full disk") +
-           ", R = " + std::to_string(disk_radius) + ", " +
+           ", R = " + std::to_string(body_radius) + ", " +
            (mesh_file.empty() ? "built-in mesh" : "mesh file " + mesh_file) +
            ", " + std::to_string(n_global_refinements) +
            " global refinements, " + std::to_string(n_contact_refinements) +
@@ -256,7 +274,7 @@ namespace DiskImpact
   BodyGeometry::with_radius(const double radius) const
   {
     BodyGeometry copy = *this;
-    copy.disk_radius  = radius;
+    copy.body_radius  = radius;
     return copy;
   }
 
@@ -277,17 +295,17 @@ namespace DiskImpact
   BodyGeometry::create_builtin_coarse_mesh(
     Triangulation<2> &triangulation) const
   {
-    if (!half_disk)
+    if (!symmetry_boundary)
       {
         GridGenerator::hyper_ball_balanced(triangulation,
                                            center(),
-                                           disk_radius);
+                                           body_radius);
         return;
       }
     // The balanced ball has cell edges on the diameter y = 0: drop the
     // lower half.
     Triangulation<2> full;
-    GridGenerator::hyper_ball_balanced(full, center(), disk_radius);
+    GridGenerator::hyper_ball_balanced(full, center(), body_radius);
     std::set<Triangulation<2>::active_cell_iterator> lower_half;
     for (const auto &cell : full.active_cell_iterators())
       if (cell->center()[1] < 0.)
@@ -330,7 +348,7 @@ namespace DiskImpact
   {
     // Built-in meshes and gmsh files alike: a boundary face is on the curved
     // edge if its vertices lie on the circle, else on the symmetry line.
-    const double tolerance = 1e-8 * disk_radius;
+    const double tolerance = 1e-8 * body_radius;
     triangulation.set_all_manifold_ids(numbers::flat_manifold_id);
     unsigned int n_curved = 0, n_symmetry = 0;
     for (const auto &cell : triangulation.active_cell_iterators())
@@ -338,9 +356,9 @@ namespace DiskImpact
         if (face->at_boundary())
           {
             const bool on_circle =
-              std::abs(face->vertex(0).distance(center()) - disk_radius) <
+              std::abs(face->vertex(0).distance(center()) - body_radius) <
                 tolerance &&
-              std::abs(face->vertex(1).distance(center()) - disk_radius) <
+              std::abs(face->vertex(1).distance(center()) - body_radius) <
                 tolerance;
             const bool on_axis = std::abs(face->vertex(0)[1]) < tolerance &&
                                  std::abs(face->vertex(1)[1]) < tolerance;
@@ -350,7 +368,7 @@ namespace DiskImpact
                 face->set_manifold_id(curved_manifold_id);
                 ++n_curved;
               }
-            else if (on_axis && half_disk)
+            else if (on_axis && symmetry_boundary)
               {
                 face->set_boundary_id(BoundaryIds::symmetry);
                 ++n_symmetry;
@@ -367,7 +385,7 @@ namespace DiskImpact
                   "and the mesh file");
           }
     require(n_curved > 0, "Geometry: the mesh has no curved boundary");
-    require(!half_disk || n_symmetry > 0,
+    require(!symmetry_boundary || n_symmetry > 0,
             body_kind == Body::sphere ?
               "Geometry: a sphere's mesh must be its meridian half disk "
               "y >= 0, with the axis y = 0 on its boundary" :
@@ -381,7 +399,7 @@ namespace DiskImpact
   {
     for (unsigned int step = 1; step <= n_contact_refinements; ++step)
       {
-        const double distance = disk_radius / std::pow(2., step);
+        const double distance = body_radius / std::pow(2., step);
         for (const auto &cell : triangulation.active_cell_iterators())
           if (cell->is_locally_owned())
             for (const unsigned int v : cell->vertex_indices())

@@ -33,10 +33,10 @@ namespace DiskImpact
 
   /// Call @p f(cell, face_number) for every face on the curved edge of the
   /// locally owned cells of @p dof_handler.
-  template <typename Function>
+  template <int dim, typename Function>
   void
-  for_each_curved_edge_face(const dealii::DoFHandler<2> &dof_handler,
-                            Function                   &&f)
+  for_each_curved_edge_face(const dealii::DoFHandler<dim> &dof_handler,
+                            Function                     &&f)
   {
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -59,14 +59,15 @@ namespace DiskImpact
    * half-width a, not only the smallest, resolve it. Throws an InputError if
    * the mesh would exceed @p max_cells active cells.
    */
+  template <int dim>
   void
   refine_toward_contact(
-    dealii::Triangulation<2> &triangulation,
-    const dealii::Point<2>   &contact_point,
-    double                    a,
-    unsigned int              n_across,
-    double                    grading,
-    double                    fine_zone_radius,
+    dealii::Triangulation<dim> &triangulation,
+    const dealii::Point<dim>   &contact_point,
+    double                      a,
+    unsigned int                n_across,
+    double                      grading,
+    double                      fine_zone_radius,
     double max_cells = std::numeric_limits<double>::infinity());
 
   /// The body: a disk (plane strain or plane stress) or a sphere (an
@@ -112,10 +113,11 @@ namespace DiskImpact
     /// Whether the body is a sphere (axisymmetric on its meridian).
     bool
     is_axisymmetric() const;
-    /// Whether the domain is y >= 0 only: a half disk, or a sphere's
-    /// meridian.
+    /// Whether the domain is y >= 0 only and ends on the impact axis y = 0
+    /// (boundary id BoundaryIds::symmetry, u_y = 0 there): a half disk's
+    /// mirror line, a sphere meridian's axis.
     bool
-    is_half_disk() const;
+    has_symmetry_boundary() const;
     /// The share of the body's loads the computed domain carries: 1/2 for
     /// a half disk, 1 for a full disk or a sphere (whose meridian's
     /// integrals are over the whole sphere).
@@ -179,9 +181,9 @@ namespace DiskImpact
     void
     refine_toward_contact_point(dealii::Triangulation<2> &triangulation) const;
 
-    Body         body_kind   = Body::disk;
-    double       disk_radius = 1.;
-    bool         half_disk   = false;
+    Body         body_kind         = Body::disk;
+    double       body_radius       = 1.;
+    bool         symmetry_boundary = false;
     std::string  mesh_file;
     unsigned int n_global_refinements  = 3;
     unsigned int n_contact_refinements = 0;

@@ -170,7 +170,7 @@ namespace DiskImpact
             "the wall is " +
               Utilities::to_string(gap) + " (must lie in [0, " +
               Utilities::to_string(max_gap * R) + "])");
-    if (geometry.is_half_disk())
+    if (geometry.has_symmetry_boundary())
       require(std::abs(rigid_wall.normal[1]) < 1e-12,
               "Contact: a half disk (symmetric about y = 0) needs a wall "
               "normal along the x axis");

@@ -26,14 +26,14 @@ namespace DiskImpact
     return std::sqrt((axisymmetric ? 2.5 : 4.) * second_moment / force);
   }
 
-  ContactOperator::ContactOperator(const ElasticityOperator         &op,
+  ContactOperator::ContactOperator(const ElasticityOperator<2>      &op,
                                    const RigidWall                  &wall,
                                    std::shared_ptr<const ContactLaw> law,
-                                   const Point<2> &disk_center)
+                                   const Point<2> &body_center)
       : op(op)
       , wall(wall)
       , law(std::move(law))
-      , origin(disk_center - wall.gap(disk_center) * wall.normal)
+      , origin(body_center - wall.gap(body_center) * wall.normal)
       , tangent_direction({-wall.normal[1], wall.normal[0]})
   {
   }
@@ -61,8 +61,8 @@ namespace DiskImpact
     std::vector<double>                  phi_n(dofs_per_cell);
     const FEValuesExtractors::Vector     displacement(0);
 
-    const Section &section = op.get_section();
-    ContactState   state;
+    const Section<2> &section = op.get_section();
+    ContactState      state;
     state.axisymmetric = section.is_axisymmetric();
     for_each_curved_edge_face(
       dof_handler, [&](const auto &cell, const unsigned int f) {
@@ -156,7 +156,7 @@ namespace DiskImpact
   }
 
   double
-  ContactOperator::smallest_edge_face(const ElasticityOperator &op)
+  ContactOperator::smallest_edge_face(const ElasticityOperator<2> &op)
   {
     double smallest = std::numeric_limits<double>::max();
     for_each_curved_edge_face(op.get_dof_handler(),

@@ -10,6 +10,7 @@
 
 namespace DiskImpact
 {
+  template <int dim>
   class ElasticityOperator;
 
   /// Integrals of the wall's pressure over the body's boundary (dS = ds
@@ -48,10 +49,10 @@ namespace DiskImpact
   class ContactOperator
   {
   public:
-    ContactOperator(const ElasticityOperator         &op,
+    ContactOperator(const ElasticityOperator<2>      &op,
                     const RigidWall                  &wall,
                     std::shared_ptr<const ContactLaw> law,
-                    const dealii::Point<2>           &disk_center);
+                    const dealii::Point<2>           &body_center);
 
     /**
      * Add the contact terms at the displacement @p ghosted_u to @p residual
@@ -69,10 +70,10 @@ namespace DiskImpact
 
     /// The length of the smallest face on the curved edge (over all ranks).
     static double
-    smallest_edge_face(const ElasticityOperator &op);
+    smallest_edge_face(const ElasticityOperator<2> &op);
 
   private:
-    const ElasticityOperator         &op;
+    const ElasticityOperator<2>      &op;
     RigidWall                         wall;
     std::shared_ptr<const ContactLaw> law;
     /// Where t = 0: the point of the wall nearest the disk's centre.

@@ -23,10 +23,10 @@ namespace DiskImpact
 {
   using namespace dealii;
 
-  ContactZone::ContactZone(const ElasticityOperator         &op,
+  ContactZone::ContactZone(const ElasticityOperator<2>      &op,
                            const RigidWall                  &wall,
                            std::shared_ptr<const ContactLaw> law,
-                           const dealii::Point<2>           &disk_center,
+                           const dealii::Point<2>           &body_center,
                            const double                      gap_bound,
                            const bool                        with_partner)
       : law(std::move(law))
@@ -58,7 +58,7 @@ namespace DiskImpact
     const FEValuesExtractors::Vector     displacement(0);
     std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
     const dealii::Point<2>               origin =
-      disk_center - wall.gap(disk_center) * wall.normal;
+      body_center - wall.gap(body_center) * wall.normal;
     const Tensor<1, 2> along({-wall.normal[1], wall.normal[0]});
 
     // This rank's candidates, flattened for the exchange: ds, g0, t, x, y,

@@ -16,6 +16,7 @@
 
 namespace DiskImpact
 {
+  template <int dim>
   class ElasticityOperator;
 
   /**
@@ -61,10 +62,10 @@ namespace DiskImpact
     /// wall normal to a collision partner's edge (locate_on_partner_edge()),
     /// and the rows hold both bodies' DoFs. Collective.
     /// @p law: null for the exact constraint.
-    ContactZone(const ElasticityOperator         &op,
+    ContactZone(const ElasticityOperator<2>      &op,
                 const RigidWall                  &wall,
                 std::shared_ptr<const ContactLaw> law,
-                const dealii::Point<2>           &disk_center,
+                const dealii::Point<2>           &body_center,
                 double                            gap_bound,
                 bool                              with_partner = false);
 

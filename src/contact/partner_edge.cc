@@ -19,7 +19,7 @@ namespace DiskImpact
   using namespace dealii;
 
   std::vector<std::optional<PartnerEdgePoint>>
-  locate_on_partner_edge(const ElasticityOperator    &op,
+  locate_on_partner_edge(const ElasticityOperator<2> &op,
                          const RigidWall             &wall,
                          const std::vector<Point<2>> &points)
   {

@@ -11,6 +11,7 @@
 
 namespace DiskImpact
 {
+  template <int dim>
   class ElasticityOperator;
 
   /// A point of a collision partner's edge facing a point x of the body's
@@ -36,7 +37,7 @@ namespace DiskImpact
    * along n on both bodies. Collective; every rank returns the same answer.
    */
   std::vector<std::optional<PartnerEdgePoint>>
-  locate_on_partner_edge(const ElasticityOperator            &op,
+  locate_on_partner_edge(const ElasticityOperator<2>         &op,
                          const RigidWall                     &wall,
                          const std::vector<dealii::Point<2>> &points);
 } // namespace DiskImpact

@@ -9,15 +9,17 @@ namespace DiskImpact
 {
   using namespace dealii;
 
-  ContactStepper::ContactStepper(const ElasticityOperator &op,
-                                 const ConstraintMap      &constraint_map,
-                                 const InterleavedMass    &mass_product,
-                                 ContactZone              &zone,
-                                 const TimeIntegrator     &integrator,
-                                 const bool                exact_constraint,
-                                 std::shared_ptr<Factorization> &factorization,
-                                 const double                    gap_scale,
-                                 MPI_Comm                        communicator)
+  template <int dim>
+  ContactStepper<dim>::ContactStepper(
+    const ElasticityOperator<dim>  &op,
+    const ConstraintMap            &constraint_map,
+    const InterleavedMass          &mass_product,
+    ContactZone                    &zone,
+    const TimeIntegrator           &integrator,
+    const bool                      exact_constraint,
+    std::shared_ptr<Factorization> &factorization,
+    const double                    gap_scale,
+    MPI_Comm                        communicator)
       : op(op)
       , constraint_map(constraint_map)
       , mass_product(mass_product)
@@ -30,8 +32,9 @@ namespace DiskImpact
   {
     if (exact_constraint && integrator.conserves_energy())
       {
-        massless   = std::make_unique<MasslessZone>(op, zone.candidate_dofs());
-        point_rows = zone.point_rows();
+        massless =
+          std::make_unique<MasslessZone<dim>>(op, zone.candidate_dofs());
+        point_rows        = zone.point_rows();
         static_compliance = massless->compliance(point_rows);
       }
     for (PETScWrappers::MPI::Vector *x :
@@ -57,9 +60,10 @@ namespace DiskImpact
     point_forces_new.reinit(zone.n_points());
   }
 
+  template <int dim>
   void
-  ContactStepper::start(const PETScWrappers::MPI::Vector &velocity,
-                        const double                      step)
+  ContactStepper<dim>::start(const PETScWrappers::MPI::Vector &velocity,
+                             const double                      step)
   {
     v = velocity;
     constraint_map.zeroed(v, work);
@@ -67,8 +71,9 @@ namespace DiskImpact
     factorize(step);
   }
 
+  template <int dim>
   void
-  ContactStepper::factorize(const double step)
+  ContactStepper<dim>::factorize(const double step)
   {
     dt = step;
     if (solver)
@@ -99,8 +104,9 @@ namespace DiskImpact
     solver->add_dofs(zone.active_dofs());
   }
 
-  ContactStepper::StepResult
-  ContactStepper::advance(const double step)
+  template <int dim>
+  typename ContactStepper<dim>::StepResult
+  ContactStepper<dim>::advance(const double step)
   {
     StepResult result;
     if (step != dt)
@@ -135,8 +141,9 @@ namespace DiskImpact
     return result;
   }
 
+  template <int dim>
   void
-  ContactStepper::complete_step()
+  ContactStepper<dim>::complete_step()
   {
     // v_new and a_new are linear combinations of fields that satisfy the
     // (homogeneous) constraints, so they satisfy them too.
@@ -149,8 +156,9 @@ namespace DiskImpact
     update_stiffness_image();
   }
 
+  template <int dim>
   bool
-  ContactStepper::attempt_step()
+  ContactStepper<dim>::attempt_step()
   {
     // Right-hand side M w - D z - af K u0, with M w from the images of u0,
     // v0, a0 and K u0 from update_stiffness_image(). (They differ from M w and
@@ -177,8 +185,9 @@ namespace DiskImpact
                               attempt_penalty_step(y_D);
   }
 
+  template <int dim>
   bool
-  ContactStepper::attempt_exact_constraint_step(const Vector<double> &y_D)
+  ContactStepper<dim>::attempt_exact_constraint_step(const Vector<double> &y_D)
   {
     // The trapezoidal step, then (energy conserving) the exact mean along
     // the step: the DoFs with mass see the mean point forces instead of
@@ -232,8 +241,9 @@ namespace DiskImpact
     return true;
   }
 
+  template <int dim>
   bool
-  ContactStepper::attempt_penalty_step(const Vector<double> &y_D)
+  ContactStepper<dim>::attempt_penalty_step(const Vector<double> &y_D)
   {
     Vector<double> u1_D = y_D;
     Vector<double> P;
@@ -288,10 +298,11 @@ namespace DiskImpact
     return true;
   }
 
+  template <int dim>
   bool
-  ContactStepper::attempt_constrained_step(const Vector<double> &y_D,
-                                           Vector<double>       &u1_D,
-                                           Vector<double>       &P)
+  ContactStepper<dim>::attempt_constrained_step(const Vector<double> &y_D,
+                                                Vector<double>       &u1_D,
+                                                Vector<double>       &P)
   {
     // The contact DoFs carry no mass: at each step's end they are in
     // equilibrium with the point forces mu1 there, so the step force is
@@ -339,9 +350,11 @@ namespace DiskImpact
       }
   }
 
+  template <int dim>
   Vector<double>
-  ContactStepper::mean_force_correction(const Vector<double> &u1_D,
-                                        const Vector<double> &applied) const
+  ContactStepper<dim>::mean_force_correction(
+    const Vector<double> &u1_D,
+    const Vector<double> &applied) const
   {
     // Along the step the DoFs with mass move on a straight line, so the
     // massless zone's gaps without contact forces, q = g - W_s mu, are
@@ -367,8 +380,9 @@ namespace DiskImpact
     return change;
   }
 
+  template <int dim>
   void
-  ContactStepper::update_stiffness_image()
+  ContactStepper<dim>::update_stiffness_image()
   {
     if (op.has_damping() || exact_constraint)
       {
@@ -388,16 +402,18 @@ namespace DiskImpact
     stiffness_u /= integrator.stiffness_coefficient();
   }
 
+  template <int dim>
   double
-  ContactStepper::damping_form(const PETScWrappers::MPI::Vector &x) const
+  ContactStepper<dim>::damping_form(const PETScWrappers::MPI::Vector &x) const
   {
     constraint_map.zeroed(x, work);
     op.damping_matrix().vmult(product, work);
     return 0.5 * (work * product);
   }
 
+  template <int dim>
   void
-  ContactStepper::refactorize()
+  ContactStepper<dim>::refactorize()
   {
     factorize(dt);
     // K u of the current state with the new K.
@@ -405,64 +421,77 @@ namespace DiskImpact
     op.stiffness_matrix().vmult(stiffness_u, work);
   }
 
+  template <int dim>
   double
-  ContactStepper::time() const
+  ContactStepper<dim>::time() const
   {
     return t;
   }
 
+  template <int dim>
   const StateVector &
-  ContactStepper::displacement() const
+  ContactStepper<dim>::displacement() const
   {
     return u;
   }
 
+  template <int dim>
   const StateVector &
-  ContactStepper::velocity() const
+  ContactStepper<dim>::velocity() const
   {
     return v;
   }
 
+  template <int dim>
   const PETScWrappers::MPI::Vector &
-  ContactStepper::mass_times_velocity() const
+  ContactStepper<dim>::mass_times_velocity() const
   {
     return mass_v;
   }
 
+  template <int dim>
   const PETScWrappers::MPI::Vector &
-  ContactStepper::stiffness_times_displacement() const
+  ContactStepper<dim>::stiffness_times_displacement() const
   {
     return stiffness_u;
   }
 
+  template <int dim>
   unsigned int
-  ContactStepper::n_newton_iterations() const
+  ContactStepper<dim>::n_newton_iterations() const
   {
     return newton_iterations;
   }
 
+  template <int dim>
   unsigned int
-  ContactStepper::n_factorizations() const
+  ContactStepper<dim>::n_factorizations() const
   {
     return factorizations_before + solver->n_factorizations();
   }
 
+  template <int dim>
   unsigned int
-  ContactStepper::n_triangular_solves() const
+  ContactStepper<dim>::n_triangular_solves() const
   {
     return solves_before + solver->n_triangular_solves();
   }
 
+  template <int dim>
   double
-  ContactStepper::triangular_solve_time() const
+  ContactStepper<dim>::triangular_solve_time() const
   {
     return (solve_time_before + solver->triangular_solve_time()) /
            n_triangular_solves();
   }
 
+  template <int dim>
   unsigned int
-  ContactStepper::n_contact_dofs() const
+  ContactStepper<dim>::n_contact_dofs() const
   {
     return solver->n_contact_dofs();
   }
+
+  template class ContactStepper<2>;
+  template class ContactStepper<3>;
 } // namespace DiskImpact

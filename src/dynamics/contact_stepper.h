@@ -37,6 +37,7 @@ namespace DiskImpact
    * constraint g >= 0 (ContactZone without a law). It knows nothing of the task
    * that drives it. Times and lengths are in the operator's units.
    */
+  template <int dim>
   class ContactStepper
   {
   public:
@@ -66,7 +67,7 @@ namespace DiskImpact
      * the contact solve's 'Newton tolerance' is relative to (the largest
      * approach expected). Collective.
      */
-    ContactStepper(const ElasticityOperator       &op,
+    ContactStepper(const ElasticityOperator<dim>  &op,
                    const ConstraintMap            &constraint_map,
                    const InterleavedMass          &mass_product,
                    ContactZone                    &zone,
@@ -161,7 +162,7 @@ namespace DiskImpact
     double
     damping_form(const dealii::PETScWrappers::MPI::Vector &x) const;
 
-    const ElasticityOperator       &op;
+    const ElasticityOperator<dim>  &op;
     const ConstraintMap            &constraint_map;
     const InterleavedMass          &mass_product;
     ContactZone                    &zone;
@@ -199,7 +200,7 @@ namespace DiskImpact
     /// With the energy-conserving scheme and the exact constraint: the
     /// massless zone in equilibrium and the points' static compliance, for
     /// the exact mean force.
-    std::unique_ptr<MasslessZone>                             massless;
+    std::unique_ptr<MasslessZone<dim>>                        massless;
     std::vector<std::vector<std::pair<unsigned int, double>>> point_rows;
     dealii::FullMatrix<double>                                static_compliance;
     mutable dealii::PETScWrappers::MPI::Vector                work, product;

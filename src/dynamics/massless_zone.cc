@@ -9,8 +9,9 @@ namespace DiskImpact
 {
   using namespace dealii;
 
-  MasslessZone::MasslessZone(
-    const ElasticityOperator                   &op,
+  template <int dim>
+  MasslessZone<dim>::MasslessZone(
+    const ElasticityOperator<dim>              &op,
     const std::vector<types::global_dof_index> &candidate_dofs)
       : op(op)
       , dofs(op.massless_dof_list())
@@ -32,11 +33,12 @@ namespace DiskImpact
   {
     /// K_MM^{-1} sum_p mu_p b_p on M.
     Vector<double>
-    solve_static(const LAPACKFullMatrix<double>       &stiffness,
-                 const std::vector<unsigned int>      &in_zone,
-                 const std::vector<MasslessZone::Row> &rows,
-                 const Vector<double>                 &mu,
-                 const unsigned int                    n)
+    solve_static(
+      const LAPACKFullMatrix<double>  &stiffness,
+      const std::vector<unsigned int> &in_zone,
+      const std::vector<std::vector<std::pair<unsigned int, double>>> &rows,
+      const Vector<double>                                            &mu,
+      const unsigned int                                               n)
     {
       Vector<double> x(n);
       for (unsigned int p = 0; p < rows.size(); ++p)
@@ -48,8 +50,9 @@ namespace DiskImpact
     }
   } // namespace
 
+  template <int dim>
   FullMatrix<double>
-  MasslessZone::compliance(const std::vector<Row> &rows) const
+  MasslessZone<dim>::compliance(const std::vector<Row> &rows) const
   {
     const unsigned int n = rows.size();
     FullMatrix<double> W(n, n);
@@ -66,9 +69,10 @@ namespace DiskImpact
     return W;
   }
 
+  template <int dim>
   Vector<double>
-  MasslessZone::response_on_candidates(const std::vector<Row> &rows,
-                                       const Vector<double>   &mu) const
+  MasslessZone<dim>::response_on_candidates(const std::vector<Row> &rows,
+                                            const Vector<double>   &mu) const
   {
     const Vector<double> x =
       solve_static(stiffness, in_zone, rows, mu, dofs.size());
@@ -78,11 +82,12 @@ namespace DiskImpact
     return on_candidates;
   }
 
+  template <int dim>
   void
-  MasslessZone::add_response(const std::vector<Row>     &rows,
-                             const Vector<double>       &mu,
-                             const double                factor,
-                             PETScWrappers::MPI::Vector &x) const
+  MasslessZone<dim>::add_response(const std::vector<Row>     &rows,
+                                  const Vector<double>       &mu,
+                                  const double                factor,
+                                  PETScWrappers::MPI::Vector &x) const
   {
     const Vector<double> e =
       solve_static(stiffness, in_zone, rows, mu, dofs.size());
@@ -91,4 +96,7 @@ namespace DiskImpact
         x(dofs[m]) += factor * e[m];
     x.compress(VectorOperation::add);
   }
+
+  template class MasslessZone<2>;
+  template class MasslessZone<3>;
 } // namespace DiskImpact

@@ -12,6 +12,7 @@
 
 namespace DiskImpact
 {
+  template <int dim>
   class ElasticityOperator;
 
   /**
@@ -22,13 +23,14 @@ namespace DiskImpact
    * forces mu. K_MM is small (edge DoFs only), replicated on every rank
    * and factorized once.
    */
+  template <int dim>
   class MasslessZone
   {
   public:
     /// The massless DoFs of @p op (assembled) must hold the candidates'
     /// DoFs @p candidate_dofs (D of a ContactZone). Collective.
     MasslessZone(
-      const ElasticityOperator                           &op,
+      const ElasticityOperator<dim>                      &op,
       const std::vector<dealii::types::global_dof_index> &candidate_dofs);
 
     using Row = std::vector<std::pair<unsigned int, double>>;
@@ -51,7 +53,7 @@ namespace DiskImpact
                  dealii::PETScWrappers::MPI::Vector &x) const;
 
   private:
-    const ElasticityOperator                    &op;
+    const ElasticityOperator<dim>               &op;
     std::vector<dealii::types::global_dof_index> dofs;    ///< M
     std::vector<unsigned int>                    in_zone; ///< D -> M
     dealii::LAPACKFullMatrix<double>             stiffness;

@@ -8,9 +8,10 @@ namespace DiskImpact
 {
   using namespace dealii;
 
-  BodyMotion::BodyMotion(const ElasticityOperator &op,
-                         const Tensor<1, 2>       &normal,
-                         const unsigned int        n_bodies)
+  template <int dim>
+  BodyMotion<dim>::BodyMotion(const ElasticityOperator<dim> &op,
+                              const Tensor<1, dim>          &normal,
+                              const unsigned int             n_bodies)
       : op(op)
       , work(op.create_vector())
       , product(op.create_vector())
@@ -49,35 +50,41 @@ namespace DiskImpact
       }
   }
 
+  template <int dim>
   unsigned int
-  BodyMotion::n_bodies() const
+  BodyMotion<dim>::n_bodies() const
   {
     return normals.size();
   }
 
+  template <int dim>
   const PETScWrappers::MPI::Vector &
-  BodyMotion::normal_field(const unsigned int body) const
+  BodyMotion<dim>::normal_field(const unsigned int body) const
   {
     return normals[body];
   }
 
+  template <int dim>
   double
-  BodyMotion::mass(const unsigned int body) const
+  BodyMotion<dim>::mass(const unsigned int body) const
   {
     return masses[body];
   }
 
+  template <int dim>
   double
-  BodyMotion::center_of_mass(const unsigned int                body,
-                             const PETScWrappers::MPI::Vector &x) const
+  BodyMotion<dim>::center_of_mass(const unsigned int                body,
+                                  const PETScWrappers::MPI::Vector &x) const
   {
     return (momenta[body] * x) / masses[body];
   }
 
+  template <int dim>
   double
-  BodyMotion::quadratic_form(const unsigned int                      body,
-                             const PETScWrappers::MPI::SparseMatrix &matrix,
-                             const PETScWrappers::MPI::Vector       &x) const
+  BodyMotion<dim>::quadratic_form(
+    const unsigned int                      body,
+    const PETScWrappers::MPI::SparseMatrix &matrix,
+    const PETScWrappers::MPI::Vector       &x) const
   {
     work = x;
     work.scale(indicators[body]);
@@ -85,4 +92,7 @@ namespace DiskImpact
     matrix.vmult(product, work);
     return 0.5 * (work * product);
   }
+
+  template class BodyMotion<2>;
+  template class BodyMotion<3>;
 } // namespace DiskImpact

@@ -9,6 +9,7 @@
 
 namespace DiskImpact
 {
+  template <int dim>
   class ElasticityOperator;
 
   /**
@@ -20,13 +21,14 @@ namespace DiskImpact
    * (M n_i) . x / (n_i . M n_i), n_i the uniform field n on body i's DoFs
    * and 0 elsewhere (the bodies share no DoF).
    */
+  template <int dim>
   class BodyMotion
   {
   public:
     /// Collective.
-    BodyMotion(const ElasticityOperator   &op,
-               const dealii::Tensor<1, 2> &normal,
-               unsigned int                n_bodies);
+    BodyMotion(const ElasticityOperator<dim> &op,
+               const dealii::Tensor<1, dim>  &normal,
+               unsigned int                   n_bodies);
 
     unsigned int
     n_bodies() const;
@@ -49,7 +51,7 @@ namespace DiskImpact
                    const dealii::PETScWrappers::MPI::Vector       &x) const;
 
   private:
-    const ElasticityOperator                       &op;
+    const ElasticityOperator<dim>                  &op;
     std::vector<dealii::PETScWrappers::MPI::Vector> normals, indicators,
       momenta;
     std::vector<double>                        masses;

@@ -7,23 +7,26 @@ namespace DiskImpact
 {
   using namespace dealii;
 
-  DiscreteOperator::DiscreteOperator(const unsigned int degree)
+  template <int dim>
+  DiscreteOperator<dim>::DiscreteOperator(const unsigned int degree)
       : fe_degree(degree)
   {
   }
 
+  template <int dim>
   unsigned int
-  DiscreteOperator::degree() const
+  DiscreteOperator<dim>::degree() const
   {
     return fe_degree;
   }
 
+  template <int dim>
   void
-  DiscreteOperator::distribute_dofs(
-    const parallel::distributed::Triangulation<2> &triangulation,
-    const FiniteElement<2>                        &fe)
+  DiscreteOperator<dim>::distribute_dofs(
+    const parallel::distributed::Triangulation<dim> &triangulation,
+    const FiniteElement<dim>                        &fe)
   {
-    mapping = std::make_unique<MappingQ<2>>(fe_degree);
+    mapping = std::make_unique<MappingQ<dim>>(fe_degree);
     dof_handler.reinit(triangulation);
     dof_handler.distribute_dofs(fe);
     // The components of each support point next to each other: the
@@ -36,8 +39,9 @@ namespace DiskImpact
     DoFTools::extract_locally_relevant_dofs(dof_handler, relevant_dofs);
   }
 
+  template <int dim>
   void
-  DiscreteOperator::move_constrained_eigenvalues(const double eigenvalue)
+  DiscreteOperator<dim>::move_constrained_eigenvalues(const double eigenvalue)
   {
     for (const auto i : owned_dofs)
       if (constraints.is_constrained(i))
@@ -45,57 +49,66 @@ namespace DiskImpact
     mass.compress(VectorOperation::insert);
   }
 
-  const DoFHandler<2> &
-  DiscreteOperator::get_dof_handler() const
+  template <int dim>
+  const DoFHandler<dim> &
+  DiscreteOperator<dim>::get_dof_handler() const
   {
     return dof_handler;
   }
 
-  const MappingQ<2> &
-  DiscreteOperator::get_mapping() const
+  template <int dim>
+  const MappingQ<dim> &
+  DiscreteOperator<dim>::get_mapping() const
   {
     return *mapping;
   }
 
+  template <int dim>
   const AffineConstraints<double> &
-  DiscreteOperator::get_constraints() const
+  DiscreteOperator<dim>::get_constraints() const
   {
     return constraints;
   }
 
+  template <int dim>
   const IndexSet &
-  DiscreteOperator::locally_owned_dofs() const
+  DiscreteOperator<dim>::locally_owned_dofs() const
   {
     return owned_dofs;
   }
 
+  template <int dim>
   const IndexSet &
-  DiscreteOperator::locally_relevant_dofs() const
+  DiscreteOperator<dim>::locally_relevant_dofs() const
   {
     return relevant_dofs;
   }
 
+  template <int dim>
   const PETScWrappers::MPI::SparseMatrix &
-  DiscreteOperator::mass_matrix() const
+  DiscreteOperator<dim>::mass_matrix() const
   {
     return mass;
   }
 
+  template <int dim>
   const PETScWrappers::MPI::SparseMatrix &
-  DiscreteOperator::stiffness_matrix() const
+  DiscreteOperator<dim>::stiffness_matrix() const
   {
     return stiffness;
   }
 
+  template <int dim>
   PETScWrappers::MPI::Vector
-  DiscreteOperator::create_vector() const
+  DiscreteOperator<dim>::create_vector() const
   {
     return PETScWrappers::MPI::Vector(owned_dofs,
                                       dof_handler.get_communicator());
   }
 
+  template <int dim>
   PETScWrappers::MPI::Vector
-  DiscreteOperator::create_ghosted(
+  DiscreteOperator<dim>::create_ghosted(
     const PETScWrappers::MPI::Vector &vector) const
   {
     PETScWrappers::MPI::Vector ghosted(owned_dofs,
@@ -104,4 +117,7 @@ namespace DiskImpact
     ghosted = vector;
     return ghosted;
   }
+
+  template class DiscreteOperator<2>;
+  template class DiscreteOperator<3>;
 } // namespace DiskImpact

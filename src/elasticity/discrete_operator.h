@@ -24,6 +24,7 @@ namespace DiskImpact
    * matrices as distributed PETSc matrices. ElasticityOperator and
    * TorsionOperator add their fields, constraints and weak forms.
    */
+  template <int dim>
   class DiscreteOperator
   {
   public:
@@ -40,9 +41,9 @@ namespace DiskImpact
     void
     move_constrained_eigenvalues(double eigenvalue);
 
-    const dealii::DoFHandler<2> &
+    const dealii::DoFHandler<dim> &
     get_dof_handler() const;
-    const dealii::MappingQ<2> &
+    const dealii::MappingQ<dim> &
     get_mapping() const;
     const dealii::AffineConstraints<double> &
     get_constraints() const;
@@ -69,12 +70,12 @@ namespace DiskImpact
     /// mapping and the owned and relevant DoFs.
     void
     distribute_dofs(
-      const dealii::parallel::distributed::Triangulation<2> &triangulation,
-      const dealii::FiniteElement<2>                        &fe);
+      const dealii::parallel::distributed::Triangulation<dim> &triangulation,
+      const dealii::FiniteElement<dim>                        &fe);
 
     const unsigned int                       fe_degree;
-    std::unique_ptr<dealii::MappingQ<2>>     mapping;
-    dealii::DoFHandler<2>                    dof_handler;
+    std::unique_ptr<dealii::MappingQ<dim>>   mapping;
+    dealii::DoFHandler<dim>                  dof_handler;
     dealii::IndexSet                         owned_dofs;
     dealii::IndexSet                         relevant_dofs;
     dealii::AffineConstraints<double>        constraints;

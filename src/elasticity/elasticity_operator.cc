@@ -65,34 +65,40 @@ namespace DiskImpact
     prm.leave_subsection();
   }
 
-  ElasticityOperator::ElasticityOperator(const unsigned int degree)
-      : DiscreteOperator(degree)
+  template <int dim>
+  ElasticityOperator<dim>::ElasticityOperator(const unsigned int degree)
+      : DiscreteOperator<dim>(degree)
   {
   }
 
+  template <int dim>
   void
-  ElasticityOperator::setup(
-    const parallel::distributed::Triangulation<2> &triangulation,
-    const BodyGeometry                            &geometry,
-    const bool                                     with_tangent,
-    const std::vector<Point<2>>                   &axial_pins)
+  ElasticityOperator<dim>::setup(
+    const parallel::distributed::Triangulation<dim> &triangulation,
+    const BodyGeometry                              &geometry,
+    const bool                                       with_tangent,
+    const std::vector<Point<dim>>                   &axial_pins)
   {
     point_states.clear();
-    section = Section(geometry.is_axisymmetric());
-    fe      = std::make_unique<FESystem<2>>(FE_Q<2>(fe_degree), 2);
-    distribute_dofs(triangulation, *fe);
+    section = Section<dim>(geometry.is_axisymmetric());
+    fe      = std::make_unique<FESystem<dim>>(FE_Q<dim>(fe_degree), dim);
+    this->distribute_dofs(triangulation, *fe);
+    // The symmetry condition u_y = 0 on y = 0.
+    std::vector<bool> y_only(dim, false);
+    y_only[1] = true;
+    const ComponentMask y_component(y_only);
 
     constraints.clear();
     constraints.reinit(relevant_dofs);
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
-    if (geometry.is_half_disk())
-      VectorTools::interpolate_boundary_values(
-        *mapping,
-        dof_handler,
-        BoundaryIds::symmetry,
-        Functions::ZeroFunction<2>(2),
-        constraints,
-        ComponentMask(std::vector<bool>{false, true}));
+    if (geometry.has_symmetry_boundary())
+      VectorTools::interpolate_boundary_values(*mapping,
+                                               dof_handler,
+                                               BoundaryIds::symmetry,
+                                               Functions::ZeroFunction<dim>(
+                                                 dim),
+                                               constraints,
+                                               y_component);
     pin_axial_displacement(axial_pins);
     constraints.close();
     massless_dofs      = IndexSet(dof_handler.n_dofs());
@@ -102,10 +108,12 @@ namespace DiskImpact
     // own pattern, half as many entries (its products dominate the
     // eigensolver's time). M's pattern is a subset of K's.
     const MPI_Comm               comm = triangulation.get_communicator();
-    Table<2, DoFTools::Coupling> all_components(2, 2), same_component(2, 2);
+    Table<2, DoFTools::Coupling> all_components(dim, dim),
+      same_component(dim, dim);
     all_components.fill(DoFTools::always);
     same_component.fill(DoFTools::none);
-    same_component(0, 0) = same_component(1, 1) = DoFTools::always;
+    for (unsigned int d = 0; d < dim; ++d)
+      same_component(d, d) = DoFTools::always;
     auto make_matrix = [&](const Table<2, DoFTools::Coupling> &coupling,
                            PETScWrappers::MPI::SparseMatrix   &matrix) {
       DynamicSparsityPattern dsp(relevant_dofs);
@@ -124,9 +132,10 @@ namespace DiskImpact
       tangent.reinit(stiffness);
   }
 
+  template <int dim>
   void
-  ElasticityOperator::set_massless_edge_zone(const Point<2> &point,
-                                             const double    radius)
+  ElasticityOperator<dim>::set_massless_edge_zone(const Point<dim> &point,
+                                                  const double      radius)
   {
     std::vector<types::global_dof_index> face_dofs(fe->n_dofs_per_face());
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -152,16 +161,18 @@ namespace DiskImpact
     redistributed_dofs.compress();
   }
 
+  template <int dim>
   unsigned int
-  ElasticityOperator::n_massless_dofs() const
+  ElasticityOperator<dim>::n_massless_dofs() const
   {
     return Utilities::MPI::sum(static_cast<unsigned int>(
                                  (massless_dofs & owned_dofs).n_elements()),
                                dof_handler.get_communicator());
   }
 
+  template <int dim>
   std::vector<types::global_dof_index>
-  ElasticityOperator::massless_dof_list() const
+  ElasticityOperator<dim>::massless_dof_list() const
   {
     std::vector<types::global_dof_index> local;
     for (const auto dof : massless_dofs)
@@ -175,8 +186,9 @@ namespace DiskImpact
     return all;
   }
 
+  template <int dim>
   FullMatrix<double>
-  ElasticityOperator::stiffness_block(
+  ElasticityOperator<dim>::stiffness_block(
     const std::vector<types::global_dof_index> &dofs) const
   {
     // (row, column, value) of this rank's rows, then everyone's.
@@ -206,8 +218,9 @@ namespace DiskImpact
     return block;
   }
 
+  template <int dim>
   void
-  ElasticityOperator::redistribute_cell_mass(
+  ElasticityOperator<dim>::redistribute_cell_mass(
     const std::vector<types::global_dof_index> &dof_indices,
     FullMatrix<double>                         &cell_mass) const
   {
@@ -244,32 +257,36 @@ namespace DiskImpact
     cell_mass = redistributed;
   }
 
+  template <int dim>
   PETScWrappers::MPI::Vector
-  ElasticityOperator::mass_functional(const PETScWrappers::MPI::Vector &y) const
+  ElasticityOperator<dim>::mass_functional(
+    const PETScWrappers::MPI::Vector &y) const
   {
-    auto y0 = y, my = create_vector();
+    auto y0 = y, my = this->create_vector();
     constraints.set_zero(y0);
     mass.vmult(my, y0);
     constraints.set_zero(my);
     return my;
   }
 
+  template <int dim>
   void
-  ElasticityOperator::assemble(const Material &material)
+  ElasticityOperator<dim>::assemble(const Material &material)
   {
     assemble(std::vector<Material>{material});
   }
 
+  template <int dim>
   void
-  ElasticityOperator::assemble(const std::vector<Material> &materials)
+  ElasticityOperator<dim>::assemble(const std::vector<Material> &materials)
   {
     Assert(!materials.empty(), ExcInternalError());
-    const QGauss<2>    quadrature(fe_degree + 1);
-    FEValues<2>        fe_values(*mapping,
-                          *fe,
-                          quadrature,
-                          update_values | update_gradients |
-                            update_quadrature_points | update_JxW_values);
+    const QGauss<dim>  quadrature(fe_degree + 1);
+    FEValues<dim>      fe_values(*mapping,
+                            *fe,
+                            quadrature,
+                            update_values | update_gradients |
+                              update_quadrature_points | update_JxW_values);
     const unsigned int dofs_per_cell = fe->n_dofs_per_cell();
     FullMatrix<double> cell_mass(dofs_per_cell, dofs_per_cell);
     FullMatrix<double> cell_stiffness(dofs_per_cell, dofs_per_cell);
@@ -293,7 +310,7 @@ namespace DiskImpact
     // whose states are kept from one assembly to the next.
     laws.clear();
     for (const Material &material : materials)
-      laws.push_back(make_constitutive_law(material));
+      laws.push_back(make_constitutive_law<dim>(material));
     with_damping = std::any_of(laws.begin(), laws.end(), [](const auto &law) {
       return law->is_viscous();
     });
@@ -303,7 +320,7 @@ namespace DiskImpact
         damping = 0.;
       }
 
-    std::vector<SymmetricTensor<2, 2>> eps(dofs_per_cell);
+    std::vector<SymmetricTensor<2, dim>> eps(dofs_per_cell);
     std::vector<double> value(dofs_per_cell), hoop(dofs_per_cell),
       trace(dofs_per_cell);
     // Each shape function of the vector element is nonzero in one
@@ -323,10 +340,10 @@ namespace DiskImpact
           const unsigned int which =
             materials.size() == 1 ? 0 : cell->material_id();
           AssertIndexRange(which, materials.size());
-          const Material        &material = materials[which];
-          const ConstitutiveLaw &law      = *laws[which];
-          const double           rho      = material.density();
-          const double           tau      = material.relaxation_time();
+          const Material             &material = materials[which];
+          const ConstitutiveLaw<dim> &law      = *laws[which];
+          const double                rho      = material.density();
+          const double                tau      = material.relaxation_time();
           if (!point_states.try_get_data(cell))
             law.initialize_states(point_states, cell, quadrature.size());
           const auto states = point_states.get_data(cell);
@@ -339,25 +356,27 @@ namespace DiskImpact
           // below.
           for (const unsigned int q : fe_values.quadrature_point_indices())
             {
-              const Point<2> &x = fe_values.quadrature_point(q);
+              const Point<dim> &x = fe_values.quadrature_point(q);
               for (unsigned int i = 0; i < dofs_per_cell; ++i)
                 {
-                  const Tensor<1, 2> phi = fe_values[displacement].value(i, q);
-                  value[i]               = phi[component[i]];
+                  const Tensor<1, dim> phi =
+                    fe_values[displacement].value(i, q);
+                  value[i] = phi[component[i]];
                   eps[i]   = fe_values[displacement].symmetric_gradient(i, q);
                   hoop[i]  = section.hoop_strain(phi, x);
                   trace[i] = dealii::trace(eps[i]);
                 }
               const double dx = fe_values.JxW(q) * section.measure(x);
-              const SymmetricTensor<4, 2> c = law.stiffness_tangent(*states[q]);
-              const SymmetricTensor<4, 2> d =
+              const SymmetricTensor<4, dim> c =
+                law.stiffness_tangent(*states[q]);
+              const SymmetricTensor<4, dim> d =
                 with_damping ? law.damping_tangent(*states[q]) :
-                               SymmetricTensor<4, 2>();
+                               SymmetricTensor<4, dim>();
               for (unsigned int i = 0; i < dofs_per_cell; ++i)
                 {
-                  const SymmetricTensor<2, 2> c_eps_i = c * eps[i];
-                  const SymmetricTensor<2, 2> d_eps_i =
-                    with_damping ? d * eps[i] : SymmetricTensor<2, 2>();
+                  const SymmetricTensor<2, dim> c_eps_i = c * eps[i];
+                  const SymmetricTensor<2, dim> d_eps_i =
+                    with_damping ? d * eps[i] : SymmetricTensor<2, dim>();
                   for (unsigned int j = 0; j <= i; ++j)
                     {
                       const double h_ij = section.is_axisymmetric() ?
@@ -397,42 +416,48 @@ namespace DiskImpact
       damping.compress(VectorOperation::add);
   }
 
-  const ConstitutiveLaw &
-  ElasticityOperator::constitutive_law(const unsigned int body) const
+  template <int dim>
+  const ConstitutiveLaw<dim> &
+  ElasticityOperator<dim>::constitutive_law(const unsigned int body) const
   {
     AssertIndexRange(body, laws.size());
     return *laws[body];
   }
 
-  QuadraturePointStates &
-  ElasticityOperator::quadrature_point_states()
+  template <int dim>
+  QuadraturePointStates<dim> &
+  ElasticityOperator<dim>::quadrature_point_states()
   {
     return point_states;
   }
 
+  template <int dim>
   bool
-  ElasticityOperator::has_damping() const
+  ElasticityOperator<dim>::has_damping() const
   {
     return with_damping;
   }
 
+  template <int dim>
   const PETScWrappers::MPI::SparseMatrix &
-  ElasticityOperator::damping_matrix() const
+  ElasticityOperator<dim>::damping_matrix() const
   {
     return damping;
   }
 
+  template <int dim>
   void
-  ElasticityOperator::assemble_body_force(const Tensor<1, 2> &force_per_area,
-                                          PETScWrappers::MPI::Vector &f,
-                                          const types::material_id body) const
+  ElasticityOperator<dim>::assemble_body_force(
+    const Tensor<1, dim>       &force_per_area,
+    PETScWrappers::MPI::Vector &f,
+    const types::material_id    body) const
   {
-    const QGauss<2>                      quadrature(fe_degree + 1);
-    FEValues<2>                          fe_values(*mapping,
-                          *fe,
-                          quadrature,
-                          update_values | update_quadrature_points |
-                            update_JxW_values);
+    const QGauss<dim>                    quadrature(fe_degree + 1);
+    FEValues<dim>                        fe_values(*mapping,
+                            *fe,
+                            quadrature,
+                            update_values | update_quadrature_points |
+                              update_JxW_values);
     const unsigned int                   dofs_per_cell = fe->n_dofs_per_cell();
     Vector<double>                       cell_f(dofs_per_cell);
     std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
@@ -455,10 +480,12 @@ namespace DiskImpact
     f.compress(VectorOperation::add);
   }
 
+  template <int dim>
   void
-  ElasticityOperator::pin_axial_displacement(const std::vector<Point<2>> &pins)
+  ElasticityOperator<dim>::pin_axial_displacement(
+    const std::vector<Point<dim>> &pins)
   {
-    for (const Point<2> &pin : pins)
+    for (const Point<dim> &pin : pins)
       {
         const double tolerance = 1e-10 * (1. + pin.norm());
         double       found     = 0.;
@@ -478,15 +505,16 @@ namespace DiskImpact
       }
   }
 
+  template <int dim>
   double
-  ElasticityOperator::volume(const types::material_id body) const
+  ElasticityOperator<dim>::volume(const types::material_id body) const
   {
-    const QGauss<2> quadrature(fe_degree + 1);
-    FEValues<2>     fe_values(*mapping,
-                          *fe,
-                          quadrature,
-                          update_quadrature_points | update_JxW_values);
-    double          sum = 0.;
+    const QGauss<dim> quadrature(fe_degree + 1);
+    FEValues<dim>     fe_values(*mapping,
+                            *fe,
+                            quadrature,
+                            update_quadrature_points | update_JxW_values);
+    double            sum = 0.;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && on_body(cell, body))
         {
@@ -498,20 +526,21 @@ namespace DiskImpact
     return Utilities::MPI::sum(sum, dof_handler.get_communicator());
   }
 
-  Tensor<1, 2>
-  ElasticityOperator::mean_displacement(
+  template <int dim>
+  Tensor<1, dim>
+  ElasticityOperator<dim>::mean_displacement(
     const PETScWrappers::MPI::Vector &ghosted_u,
     const types::material_id          body) const
   {
-    const QGauss<2>           quadrature(fe_degree + 1);
-    FEValues<2>               fe_values(*mapping,
-                          *fe,
-                          quadrature,
-                          update_values | update_quadrature_points |
-                            update_JxW_values);
-    std::vector<Tensor<1, 2>> u(quadrature.size());
-    Tensor<1, 2>              integral;
-    double                    volume = 0.;
+    const QGauss<dim>           quadrature(fe_degree + 1);
+    FEValues<dim>               fe_values(*mapping,
+                            *fe,
+                            quadrature,
+                            update_values | update_quadrature_points |
+                              update_JxW_values);
+    std::vector<Tensor<1, dim>> u(quadrature.size());
+    Tensor<1, dim>              integral;
+    double                      volume = 0.;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && on_body(cell, body))
         {
@@ -535,22 +564,23 @@ namespace DiskImpact
            Utilities::MPI::sum(volume, comm);
   }
 
-  Tensor<1, 2>
-  ElasticityOperator::vertex_displacement(
+  template <int dim>
+  Tensor<1, dim>
+  ElasticityOperator<dim>::vertex_displacement(
     const PETScWrappers::MPI::Vector &ghosted_u,
-    const Point<2>                   &vertex,
+    const Point<dim>                 &vertex,
     const types::material_id          body) const
   {
     // Each rank that owns a cell at the vertex contributes once.
-    const double tolerance = 1e-10 * (1. + vertex.norm());
-    Tensor<1, 2> u;
-    double       found = 0.;
+    const double   tolerance = 1e-10 * (1. + vertex.norm());
+    Tensor<1, dim> u;
+    double         found = 0.;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && on_body(cell, body) && found == 0.)
         for (const unsigned int v : cell->vertex_indices())
           if (cell->vertex(v).distance(vertex) < tolerance)
             {
-              for (unsigned int c = 0; c < 2; ++c)
+              for (unsigned int c = 0; c < dim; ++c)
                 u[c] = ghosted_u(cell->vertex_dof_index(v, c));
               found = 1.;
               break;
@@ -562,23 +592,28 @@ namespace DiskImpact
     return Utilities::MPI::sum(u, comm) / n_found;
   }
 
+  template <int dim>
   PETScWrappers::MPI::SparseMatrix &
-  ElasticityOperator::tangent_reset_to_stiffness()
+  ElasticityOperator<dim>::tangent_reset_to_stiffness()
   {
     tangent.copy_from(stiffness);
     return tangent;
   }
 
+  template <int dim>
   const PETScWrappers::MPI::SparseMatrix &
-  ElasticityOperator::tangent_matrix() const
+  ElasticityOperator<dim>::tangent_matrix() const
   {
     return tangent;
   }
 
-  const Section &
-  ElasticityOperator::get_section() const
+  template <int dim>
+  const Section<dim> &
+  ElasticityOperator<dim>::get_section() const
   {
     return section;
   }
 
+  template class ElasticityOperator<2>;
+  template class ElasticityOperator<3>;
 } // namespace DiskImpact

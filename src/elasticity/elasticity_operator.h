@@ -45,7 +45,8 @@ namespace DiskImpact
    * the mass and stiffness matrices as distributed PETSc matrices, planar or
    * axisymmetric (Section).
    */
-  class ElasticityOperator : public DiscreteOperator
+  template <int dim>
+  class ElasticityOperator : public DiscreteOperator<dim>
   {
   public:
     explicit ElasticityOperator(unsigned int degree);
@@ -56,10 +57,11 @@ namespace DiskImpact
     /// (a free body's translation along the impact axis, removed for a
     /// static solve).
     void
-    setup(const dealii::parallel::distributed::Triangulation<2> &triangulation,
-          const BodyGeometry                                    &geometry,
-          bool                                 with_tangent = false,
-          const std::vector<dealii::Point<2>> &axial_pins   = {});
+    setup(
+      const dealii::parallel::distributed::Triangulation<dim> &triangulation,
+      const BodyGeometry                                      &geometry,
+      bool                                   with_tangent = false,
+      const std::vector<dealii::Point<dim>> &axial_pins   = {});
 
     /**
      * Mass redistribution (Khenous, Laborde & Renard, Eur. J. Mech. A/Solids
@@ -74,7 +76,7 @@ namespace DiskImpact
      * assemble().
      */
     void
-    set_massless_edge_zone(const dealii::Point<2> &point, double radius);
+    set_massless_edge_zone(const dealii::Point<dim> &point, double radius);
     /// The number of DoFs without inertia (set_massless_edge_zone()).
     unsigned int
     n_massless_dofs() const;
@@ -113,7 +115,7 @@ namespace DiskImpact
     /// volume for a sphere), on the cells of material id @p body (all cells
     /// if invalid_material_id).
     void
-    assemble_body_force(const dealii::Tensor<1, 2>         &force_per_area,
+    assemble_body_force(const dealii::Tensor<1, dim>       &force_per_area,
                         dealii::PETScWrappers::MPI::Vector &f,
                         dealii::types::material_id          body =
                           dealii::numbers::invalid_material_id) const;
@@ -128,7 +130,7 @@ namespace DiskImpact
     /// Volume average of the displacement over the cells of material id
     /// @p body (all if invalid_material_id): the centre of mass's
     /// displacement for a uniform density (on a sphere along the axis only).
-    dealii::Tensor<1, 2>
+    dealii::Tensor<1, dim>
     mean_displacement(const dealii::PETScWrappers::MPI::Vector &ghosted_u,
                       dealii::types::material_id                body =
                         dealii::numbers::invalid_material_id) const;
@@ -136,9 +138,9 @@ namespace DiskImpact
     /// The displacement at a vertex of the mesh, seen from the cells of
     /// material id @p body (all if invalid_material_id): two bodies that
     /// touch have a vertex each at the contact point.
-    dealii::Tensor<1, 2>
+    dealii::Tensor<1, dim>
     vertex_displacement(const dealii::PETScWrappers::MPI::Vector &ghosted_u,
-                        const dealii::Point<2>                   &vertex,
+                        const dealii::Point<dim>                 &vertex,
                         dealii::types::material_id                body =
                           dealii::numbers::invalid_material_id) const;
 
@@ -150,27 +152,36 @@ namespace DiskImpact
     tangent_matrix() const;
 
     /// Planar or axisymmetric (set by setup() from the geometry).
-    const Section &
+    const Section<dim> &
     get_section() const;
     /// The constitutive law of each body (by material id), as assemble()
     /// made them.
-    const ConstitutiveLaw &
+    const ConstitutiveLaw<dim> &
     constitutive_law(unsigned int body = 0) const;
     /// The laws' states at the quadrature points of the locally owned
     /// cells (the order of assemble()'s QGauss(degree + 1)).
-    QuadraturePointStates &
+    QuadraturePointStates<dim> &
     quadrature_point_states();
     const dealii::PETScWrappers::MPI::SparseMatrix &
     damping_matrix() const;
 
   private:
+    using DiscreteOperator<dim>::fe_degree;
+    using DiscreteOperator<dim>::mapping;
+    using DiscreteOperator<dim>::dof_handler;
+    using DiscreteOperator<dim>::owned_dofs;
+    using DiscreteOperator<dim>::relevant_dofs;
+    using DiscreteOperator<dim>::constraints;
+    using DiscreteOperator<dim>::mass;
+    using DiscreteOperator<dim>::stiffness;
+
     /// Constrain the x-displacement to zero at the vertices @p pins.
     void
-    pin_axial_displacement(const std::vector<dealii::Point<2>> &pins);
+    pin_axial_displacement(const std::vector<dealii::Point<dim>> &pins);
 
-    Section section;
+    Section<dim> section;
 
-    std::unique_ptr<dealii::FESystem<2>> fe;
+    std::unique_ptr<dealii::FESystem<dim>> fe;
     /// DoFs without inertia (mass redistribution), size n_dofs.
     dealii::IndexSet massless_dofs;
     /// The DoFs whose mass moves in the cell mass form: massless_dofs and
@@ -188,7 +199,7 @@ namespace DiskImpact
     dealii::PETScWrappers::MPI::SparseMatrix damping;
     bool                                     with_damping = false;
     /// Each body's law, and the laws' states at the quadrature points.
-    std::vector<std::unique_ptr<ConstitutiveLaw>> laws;
-    QuadraturePointStates                         point_states;
+    std::vector<std::unique_ptr<ConstitutiveLaw<dim>>> laws;
+    QuadraturePointStates<dim>                         point_states;
   };
 } // namespace DiskImpact

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <deal.II/base/exceptions.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
@@ -18,13 +19,17 @@ namespace DiskImpact
    *   strain eps_theta = u_r / r = u_y / y beside the meridian's strains.
    *   Masses, forces, energies and momenta are then those of the whole 3D
    *   body.
+   * - Solid (dim = 3): the body itself, dV = dA = 1 per unit volume.
    */
+  template <int dim>
   class Section
   {
   public:
     explicit Section(const bool axisymmetric = false)
         : axisymmetric(axisymmetric)
     {
+      Assert(dim == 2 || !axisymmetric,
+             dealii::ExcMessage("an axisymmetric section is two-dimensional"));
     }
 
     bool
@@ -35,7 +40,7 @@ namespace DiskImpact
 
     /// dV / dA (or dS / ds on the boundary) at @p point.
     double
-    measure(const dealii::Point<2> &point) const
+    measure(const dealii::Point<dim> &point) const
     {
       return axisymmetric ? 2. * M_PI * point[1] : 1.;
     }
@@ -43,8 +48,8 @@ namespace DiskImpact
     /// The hoop strain u_r / r of displacement @p u at @p point (0 planar).
     /// Quadrature points never lie on the axis.
     double
-    hoop_strain(const dealii::Tensor<1, 2> &u,
-                const dealii::Point<2>     &point) const
+    hoop_strain(const dealii::Tensor<1, dim> &u,
+                const dealii::Point<dim>     &point) const
     {
       return axisymmetric ? u[1] / point[1] : 0.;
     }

@@ -21,7 +21,7 @@ namespace DiskImpact
   } // namespace
 
   SectionStressModel::SectionStressModel(const Material &material)
-      : stiffness(material.stiffness_tensor())
+      : stiffness(material.stiffness_tensor<2>())
       , axisymmetric(material.plane_model() == PlaneModel::axisymmetric)
       , lambda(material.lame_lambda())
       , mu(material.shear_modulus())

@@ -23,7 +23,7 @@ namespace DiskImpact
   using namespace dealii;
 
   TorsionOperator::TorsionOperator(const unsigned int degree)
-      : DiscreteOperator(degree)
+      : DiscreteOperator<2>(degree)
       , fe(degree)
   {
   }

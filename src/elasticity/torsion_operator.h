@@ -23,7 +23,7 @@ namespace DiskImpact
    * with Q_k elements, a degree-k boundary mapping and w = 0 on the axis.
    * K's null space is the rigid rotation about the axis, w = r.
    */
-  class TorsionOperator : public DiscreteOperator
+  class TorsionOperator : public DiscreteOperator<2>
   {
   public:
     explicit TorsionOperator(unsigned int degree);

@@ -4,67 +4,88 @@ namespace DiskImpact
 {
   using namespace dealii;
 
+  template <int dim>
   void
-  ConstitutiveLaw::initialize_states(
-    QuadraturePointStates                 &states,
-    const Triangulation<2>::cell_iterator &cell,
-    const unsigned int                     n_points) const
+  ConstitutiveLaw<dim>::initialize_states(
+    QuadraturePointStates<dim>                       &states,
+    const typename Triangulation<dim>::cell_iterator &cell,
+    const unsigned int                                n_points) const
   {
-    states.initialize<QuadraturePointState>(cell, n_points);
+    states.template initialize<QuadraturePointState>(cell, n_points);
   }
 
+  template <int dim>
   bool
-  ConstitutiveLaw::changes_stiffness() const
+  ConstitutiveLaw<dim>::changes_stiffness() const
   {
     return false;
   }
 
-  LinearElasticLaw::LinearElasticLaw(const Material &material)
-      : stiffness(material.stiffness_tensor())
+  template <int dim>
+  LinearElasticLaw<dim>::LinearElasticLaw(const Material &material)
+      : stiffness(material.stiffness_tensor<dim>())
   {
   }
 
-  SymmetricTensor<4, 2>
-  LinearElasticLaw::stiffness_tangent(const QuadraturePointState &) const
+  template <int dim>
+  SymmetricTensor<4, dim>
+  LinearElasticLaw<dim>::stiffness_tangent(const QuadraturePointState &) const
   {
     return stiffness;
   }
 
-  SymmetricTensor<4, 2>
-  LinearElasticLaw::damping_tangent(const QuadraturePointState &) const
+  template <int dim>
+  SymmetricTensor<4, dim>
+  LinearElasticLaw<dim>::damping_tangent(const QuadraturePointState &) const
   {
-    return SymmetricTensor<4, 2>();
+    return SymmetricTensor<4, dim>();
   }
 
+  template <int dim>
   bool
-  LinearElasticLaw::is_viscous() const
+  LinearElasticLaw<dim>::is_viscous() const
   {
     return false;
   }
 
-  KelvinVoigtLaw::KelvinVoigtLaw(const Material &material)
-      : LinearElasticLaw(material)
-      , damping(material.damping_tensor())
+  template <int dim>
+  KelvinVoigtLaw<dim>::KelvinVoigtLaw(const Material &material)
+      : LinearElasticLaw<dim>(material)
+      , damping(material.damping_tensor<dim>())
   {
   }
 
-  SymmetricTensor<4, 2>
-  KelvinVoigtLaw::damping_tangent(const QuadraturePointState &) const
+  template <int dim>
+  SymmetricTensor<4, dim>
+  KelvinVoigtLaw<dim>::damping_tangent(const QuadraturePointState &) const
   {
     return damping;
   }
 
+  template <int dim>
   bool
-  KelvinVoigtLaw::is_viscous() const
+  KelvinVoigtLaw<dim>::is_viscous() const
   {
     return true;
   }
 
-  std::unique_ptr<ConstitutiveLaw>
+  template <int dim>
+  std::unique_ptr<ConstitutiveLaw<dim>>
   make_constitutive_law(const Material &material)
   {
     if (material.is_viscous())
-      return std::make_unique<KelvinVoigtLaw>(material);
-    return std::make_unique<LinearElasticLaw>(material);
+      return std::make_unique<KelvinVoigtLaw<dim>>(material);
+    return std::make_unique<LinearElasticLaw<dim>>(material);
   }
+
+  template class ConstitutiveLaw<2>;
+  template class ConstitutiveLaw<3>;
+  template class LinearElasticLaw<2>;
+  template class LinearElasticLaw<3>;
+  template class KelvinVoigtLaw<2>;
+  template class KelvinVoigtLaw<3>;
+  template std::unique_ptr<ConstitutiveLaw<2>>
+  make_constitutive_law<2>(const Material &material);
+  template std::unique_ptr<ConstitutiveLaw<3>>
+  make_constitutive_law<3>(const Material &material);
 } // namespace DiskImpact

@@ -24,8 +24,9 @@ namespace DiskImpact
 
   /// The states of a mesh's locally owned cells, one per quadrature point
   /// (deal.II's CellDataStorage).
+  template <int dim>
   using QuadraturePointStates =
-    dealii::CellDataStorage<dealii::Triangulation<2>::cell_iterator,
+    dealii::CellDataStorage<typename dealii::Triangulation<dim>::cell_iterator,
                             QuadraturePointState>;
 
   /**
@@ -37,6 +38,7 @@ namespace DiskImpact
    * reassembled where the state changed and the stepper refactorizes
    * (ContactStepper::refactorize()).
    */
+  template <int dim>
   class ConstitutiveLaw
   {
   public:
@@ -45,12 +47,13 @@ namespace DiskImpact
     /// Create the states of @p cell's @p n_points quadrature points in
     /// @p states (by default the empty QuadraturePointState).
     virtual void
-    initialize_states(QuadraturePointStates                         &states,
-                      const dealii::Triangulation<2>::cell_iterator &cell,
-                      unsigned int n_points) const;
-    virtual dealii::SymmetricTensor<4, 2>
+    initialize_states(
+      QuadraturePointStates<dim>                               &states,
+      const typename dealii::Triangulation<dim>::cell_iterator &cell,
+      unsigned int                                              n_points) const;
+    virtual dealii::SymmetricTensor<4, dim>
     stiffness_tangent(const QuadraturePointState &state) const = 0;
-    virtual dealii::SymmetricTensor<4, 2>
+    virtual dealii::SymmetricTensor<4, dim>
     damping_tangent(const QuadraturePointState &state) const = 0;
     /// Whether D is not zero.
     virtual bool
@@ -62,38 +65,41 @@ namespace DiskImpact
   };
 
   /// Linear isotropic elasticity: C of the material, D = 0.
-  class LinearElasticLaw : public ConstitutiveLaw
+  template <int dim>
+  class LinearElasticLaw : public ConstitutiveLaw<dim>
   {
   public:
     explicit LinearElasticLaw(const Material &material);
-    dealii::SymmetricTensor<4, 2>
+    dealii::SymmetricTensor<4, dim>
     stiffness_tangent(const QuadraturePointState &state) const override;
-    dealii::SymmetricTensor<4, 2>
+    dealii::SymmetricTensor<4, dim>
     damping_tangent(const QuadraturePointState &state) const override;
     bool
     is_viscous() const override;
 
   private:
-    dealii::SymmetricTensor<4, 2> stiffness;
+    dealii::SymmetricTensor<4, dim> stiffness;
   };
 
   /// Kelvin-Voigt viscoelasticity: C and D of the material
   /// (Material::damping_tensor()).
-  class KelvinVoigtLaw : public LinearElasticLaw
+  template <int dim>
+  class KelvinVoigtLaw : public LinearElasticLaw<dim>
   {
   public:
     explicit KelvinVoigtLaw(const Material &material);
-    dealii::SymmetricTensor<4, 2>
+    dealii::SymmetricTensor<4, dim>
     damping_tangent(const QuadraturePointState &state) const override;
     bool
     is_viscous() const override;
 
   private:
-    dealii::SymmetricTensor<4, 2> damping;
+    dealii::SymmetricTensor<4, dim> damping;
   };
 
   /// The law of @p material: Kelvin-Voigt if it is viscous, else linear
   /// elastic.
-  std::unique_ptr<ConstitutiveLaw>
+  template <int dim>
+  std::unique_ptr<ConstitutiveLaw<dim>>
   make_constitutive_law(const Material &material);
 } // namespace DiskImpact

@@ -223,16 +223,22 @@ namespace DiskImpact
     return in_plane_young_modulus() * nu2 / (1. - nu2 * nu2);
   }
 
-  SymmetricTensor<4, 2>
+  template <int dim>
+  SymmetricTensor<4, dim>
   Material::stiffness_tensor() const
   {
-    const double          mu     = shear_modulus();
-    const double          lambda = lame_lambda();
-    SymmetricTensor<4, 2> c;
-    for (unsigned int i = 0; i < 2; ++i)
-      for (unsigned int j = 0; j < 2; ++j)
-        for (unsigned int k = 0; k < 2; ++k)
-          for (unsigned int l = 0; l < 2; ++l)
+    // In three dimensions the Lame constants of E and nu (a plane-strain
+    // disk's in-plane constants are the same).
+    const double mu =
+      dim == 2 ? shear_modulus() : young / (2. * (1. + poisson));
+    const double lambda =
+      dim == 2 ? lame_lambda() :
+                 young * poisson / ((1. + poisson) * (1. - 2. * poisson));
+    SymmetricTensor<4, dim> c;
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = 0; j < dim; ++j)
+        for (unsigned int k = 0; k < dim; ++k)
+          for (unsigned int l = 0; l < dim; ++l)
             c[i][j][k][l] = lambda * (i == j) * (k == l) +
                             mu * ((i == k) * (j == l) + (i == l) * (j == k));
     return c;
@@ -251,15 +257,25 @@ namespace DiskImpact
     bulk_eta  = bulk_viscosity;
   }
 
-  SymmetricTensor<4, 2>
+  template <int dim>
+  SymmetricTensor<4, dim>
   Material::damping_tensor() const
   {
     const auto one_one =
-      outer_product(unit_symmetric_tensor<2>(), unit_symmetric_tensor<2>());
-    return relaxation_tau * stiffness_tensor() +
-           2. * shear_eta * (identity_tensor<2>() - 0.5 * one_one) +
+      outer_product(unit_symmetric_tensor<dim>(), unit_symmetric_tensor<dim>());
+    return relaxation_tau * stiffness_tensor<dim>() +
+           2. * shear_eta * (identity_tensor<dim>() - one_one / dim) +
            bulk_eta * one_one;
   }
+
+  template SymmetricTensor<4, 2>
+  Material::stiffness_tensor<2>() const;
+  template SymmetricTensor<4, 3>
+  Material::stiffness_tensor<3>() const;
+  template SymmetricTensor<4, 2>
+  Material::damping_tensor<2>() const;
+  template SymmetricTensor<4, 3>
+  Material::damping_tensor<3>() const;
 
   bool
   Material::is_viscous() const

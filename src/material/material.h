@@ -92,8 +92,10 @@ namespace DiskImpact
     double
     lame_lambda() const;
 
-    /// sigma = C : eps.
-    dealii::SymmetricTensor<4, 2>
+    /// sigma = C : eps: in two dimensions with the in-plane constants of
+    /// the plane model, in three with E and nu.
+    template <int dim>
+    dealii::SymmetricTensor<4, dim>
     stiffness_tensor() const;
 
     /// In-plane viscosities of the general Kelvin-Voigt law (checked >= 0).
@@ -103,9 +105,10 @@ namespace DiskImpact
      * The viscous stress sigma_v = D : eps_dot of the Kelvin-Voigt law:
      * D = tau C + 2 eta_s (I - 1 x 1 / 2) + eta_b 1 x 1, i.e. the relaxation
      * time's part proportional to C and separate in-plane shear (deviatoric)
-     * and bulk viscosities.
+     * and bulk viscosities (1 x 1 / dim in three dimensions).
      */
-    dealii::SymmetricTensor<4, 2>
+    template <int dim>
+    dealii::SymmetricTensor<4, dim>
     damping_tensor() const;
     /// Whether D is not zero.
     bool

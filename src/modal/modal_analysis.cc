@@ -106,7 +106,7 @@ namespace DiskImpact
       std::pow(material.transverse_wave_speed() / geometry.radius(), 2);
     op.move_constrained_eigenvalues(1e10 * scale);
 
-    const unsigned int n_rigid = geometry.is_half_disk() ? 1 : 3;
+    const unsigned int n_rigid = geometry.has_symmetry_boundary() ? 1 : 3;
     {
       TimerOutput::Scope scope(timer, "eigensolver");
       basis = solver.solve(op, n_rigid + n_elastic + 1, -scale);
@@ -121,7 +121,7 @@ namespace DiskImpact
     const auto labels = label_modes(basis.eigenvalues,
                                     harmonics,
                                     1e-6 * scale,
-                                    geometry.is_half_disk(),
+                                    geometry.has_symmetry_boundary(),
                                     coupled_family(geometry));
 
     const auto              reference = analytic_free_modes(geometry, material);

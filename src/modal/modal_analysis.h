@@ -96,7 +96,7 @@ namespace DiskImpact
     MPI_Comm                                        communicator;
     dealii::TimerOutput                            &timer;
     dealii::parallel::distributed::Triangulation<2> triangulation;
-    ElasticityOperator                              op;
+    ElasticityOperator<2>                           op;
     ModalBasis                                      basis;
   };
 } // namespace DiskImpact

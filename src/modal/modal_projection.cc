@@ -11,13 +11,13 @@ namespace DiskImpact
 {
   using namespace dealii;
 
-  ModalProjection::ModalProjection(ElasticityOperator &op,
-                                   const BodyGeometry &geometry,
-                                   const double        eigenvalue_scale,
-                                   const unsigned int  n_elastic_modes)
+  ModalProjection::ModalProjection(ElasticityOperator<2> &op,
+                                   const BodyGeometry    &geometry,
+                                   const double           eigenvalue_scale,
+                                   const unsigned int     n_elastic_modes)
   {
     op.move_constrained_eigenvalues(1e10 * eigenvalue_scale);
-    const unsigned int n_rigid = geometry.is_half_disk() ? 1 : 3;
+    const unsigned int n_rigid = geometry.has_symmetry_boundary() ? 1 : 3;
     ModalSolver        solver;
     basis = solver.solve(op, n_rigid + n_elastic_modes, -eigenvalue_scale);
 
@@ -28,7 +28,7 @@ namespace DiskImpact
     labels = label_modes(basis.eigenvalues,
                          harmonics,
                          1e-6 * eigenvalue_scale,
-                         geometry.is_half_disk(),
+                         geometry.has_symmetry_boundary(),
                          coupled_family(geometry));
     while (first_elastic < labels.size() &&
            labels[first_elastic].label.family == Reference::ModeFamily::rigid)

@@ -12,6 +12,7 @@ namespace DiskImpact
 {
   class CsvTable;
   class BodyGeometry;
+  template <int dim>
   class ElasticityOperator;
 
   /**
@@ -28,10 +29,10 @@ namespace DiskImpact
   public:
     /// Modes of @p op (assembled; its constrained rows get a far
     /// eigenvalue, harmless for time stepping, where they are zeroed).
-    ModalProjection(ElasticityOperator &op,
-                    const BodyGeometry &geometry,
-                    double              eigenvalue_scale,
-                    unsigned int        n_elastic_modes);
+    ModalProjection(ElasticityOperator<2> &op,
+                    const BodyGeometry    &geometry,
+                    double                 eigenvalue_scale,
+                    unsigned int           n_elastic_modes);
 
     /// Energy of each elastic mode in the state (u, v).
     std::vector<double>

@@ -81,9 +81,9 @@ namespace DiskImpact
   }
 
   ModalBasis
-  ModalSolver::solve(const DiscreteOperator &op,
-                     const unsigned int      n_wanted,
-                     const double            shift) const
+  ModalSolver::solve(const DiscreteOperator<2> &op,
+                     const unsigned int         n_wanted,
+                     const double               shift) const
   {
     const Mat stiffness = op.stiffness_matrix();
     const Mat mass      = op.mass_matrix();

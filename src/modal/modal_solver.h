@@ -8,6 +8,7 @@
 
 namespace DiskImpact
 {
+  template <int dim>
   class DiscreteOperator;
 
   /// Eigenpairs K phi = omega^2 M phi, ascending, phi M-orthonormal.
@@ -54,9 +55,9 @@ namespace DiskImpact
      * (negative) shift of the spectral transformation.
      */
     ModalBasis
-    solve(const DiscreteOperator &op,
-          unsigned int            n_wanted,
-          double                  shift) const;
+    solve(const DiscreteOperator<2> &op,
+          unsigned int               n_wanted,
+          double                     shift) const;
 
   private:
     unsigned int n_modes            = 40;

@@ -62,7 +62,7 @@ namespace DiskImpact
      */
     template <typename Function>
     void
-    for_each_edge_point(const ElasticityOperator         &op,
+    for_each_edge_point(const ElasticityOperator<2>      &op,
                         const BodyGeometry               &geometry,
                         const PETScWrappers::MPI::Vector &displacement,
                         Function                        &&f)
@@ -97,7 +97,7 @@ namespace DiskImpact
     /// The Legendre content of a sphere's surface displacement
     /// (compute_boundary_harmonics()).
     HarmonicContent
-    surface_legendre_content(const ElasticityOperator         &op,
+    surface_legendre_content(const ElasticityOperator<2>      &op,
                              const BodyGeometry               &geometry,
                              const PETScWrappers::MPI::Vector &displacement,
                              const unsigned int                n_max)
@@ -144,7 +144,7 @@ namespace DiskImpact
   } // namespace
 
   HarmonicContent
-  compute_boundary_harmonics(const ElasticityOperator         &op,
+  compute_boundary_harmonics(const ElasticityOperator<2>      &op,
                              const BodyGeometry               &geometry,
                              const PETScWrappers::MPI::Vector &displacement,
                              const unsigned int                n_max)
@@ -181,7 +181,7 @@ namespace DiskImpact
 
     // On the half circle cos(n phi) and sin(m phi) are not orthogonal; the
     // half disk holds only the symmetric part, u_r in cos and u_phi in sin.
-    const bool      full_circle = !geometry.is_half_disk();
+    const bool      full_circle = !geometry.has_symmetry_boundary();
     HarmonicContent content;
     for (unsigned int n = 0; n < n_orders; ++n)
       {
@@ -202,11 +202,11 @@ namespace DiskImpact
   label_modes(const std::vector<double>          &eigenvalues,
               const std::vector<HarmonicContent> &harmonics,
               const double                        rigid_eigenvalue,
-              const bool                          half_disk,
+              const bool                          half_domain,
               const Reference::ModeFamily         coupled_family)
   {
     using Reference::ModeFamily;
-    const unsigned int orientations = half_disk ? 1 : 2;
+    const unsigned int orientations = half_domain ? 1 : 2;
 
     std::map<std::pair<unsigned int, ModeFamily>, unsigned int> seen;
     std::vector<LabelledMode>                                   labelled;

@@ -8,6 +8,7 @@
 
 namespace DiskImpact
 {
+  template <int dim>
   class ElasticityOperator;
   class BodyGeometry;
 
@@ -49,7 +50,7 @@ namespace DiskImpact
   /// The harmonic content of @p ghosted_displacement on the curved edge.
   HarmonicContent
   compute_boundary_harmonics(
-    const ElasticityOperator                 &op,
+    const ElasticityOperator<2>              &op,
     const BodyGeometry                       &geometry,
     const dealii::PETScWrappers::MPI::Vector &ghosted_displacement,
     unsigned int                              n_max);
@@ -72,6 +73,6 @@ namespace DiskImpact
     const std::vector<double>          &eigenvalues,
     const std::vector<HarmonicContent> &harmonics,
     double                              rigid_eigenvalue,
-    bool                                half_disk,
+    bool                                half_domain,
     Reference::ModeFamily coupled_family = Reference::ModeFamily::mixed);
 } // namespace DiskImpact

@@ -45,7 +45,7 @@ namespace DiskImpact
     /// postprocessors outlive the DataOut that points to them).
     struct StatePatches
     {
-      StatePatches(const ElasticityOperator         &op,
+      StatePatches(const ElasticityOperator<2>      &op,
                    const std::vector<Material>      &material,
                    const PETScWrappers::MPI::Vector &ghosted_u,
                    const FieldScales                &scales)
@@ -83,7 +83,7 @@ namespace DiskImpact
   } // namespace
 
   std::string
-  write_deformed_state(const ElasticityOperator         &op,
+  write_deformed_state(const ElasticityOperator<2>      &op,
                        const std::vector<Material>      &material,
                        const PETScWrappers::MPI::Vector &ghosted_u,
                        const std::string                &directory,
@@ -101,7 +101,7 @@ namespace DiskImpact
   }
 
   std::pair<std::string, std::string>
-  write_deformed_and_revolved_state(const ElasticityOperator         &op,
+  write_deformed_and_revolved_state(const ElasticityOperator<2>      &op,
                                     const std::vector<Material>      &material,
                                     const PETScWrappers::MPI::Vector &ghosted_u,
                                     const Point<2>                   &centre,

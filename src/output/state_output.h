@@ -12,6 +12,7 @@
 
 namespace DiskImpact
 {
+  template <int dim>
   class ElasticityOperator;
   class Material;
 
@@ -27,7 +28,7 @@ namespace DiskImpact
    * name relative to @p directory.
    */
   std::string
-  write_deformed_state(const ElasticityOperator                 &op,
+  write_deformed_state(const ElasticityOperator<2>              &op,
                        const std::vector<Material>              &materials,
                        const dealii::PETScWrappers::MPI::Vector &ghosted_u,
                        const std::string                        &directory,
@@ -46,7 +47,7 @@ namespace DiskImpact
    */
   std::pair<std::string, std::string>
   write_deformed_and_revolved_state(
-    const ElasticityOperator                 &op,
+    const ElasticityOperator<2>              &op,
     const std::vector<Material>              &materials,
     const dealii::PETScWrappers::MPI::Vector &ghosted_u,
     const dealii::Point<2>                   &centre,

@@ -53,11 +53,11 @@ namespace DiskImpact
 
       /**
        * The lowest @p n_modes elastic modes in ascending frequency, with
-       * their multiplicity on the domain (@p half_disk: only the modes
+       * their multiplicity on the domain (@p half_domain: only the modes
        * symmetric about the impact axis).
        */
       virtual std::vector<ModeLabel>
-      lowest_modes(unsigned int n_modes, bool half_disk) const = 0;
+      lowest_modes(unsigned int n_modes, bool half_domain) const = 0;
     };
   } // namespace Reference
 } // namespace DiskImpact

@@ -211,9 +211,9 @@ namespace DiskImpact
 
     std::vector<ModeLabel>
     FreeDiskModes::lowest_modes(const unsigned int n_modes,
-                                const bool         half_disk) const
+                                const bool         half_domain) const
     {
-      const unsigned int multiplicity = half_disk ? 1 : 2;
+      const unsigned int multiplicity = half_domain ? 1 : 2;
       for (double kappa_max = 4.;; kappa_max *= 1.5)
         {
           std::vector<std::pair<double, ModeLabel>> found;
@@ -225,7 +225,7 @@ namespace DiskImpact
             return roots.size();
           };
           add_family(0, ModeFamily::radial);
-          if (!half_disk)
+          if (!half_domain)
             add_family(0, ModeFamily::torsional);
           // The lowest mode of order n rises with n (n >= 2): stop at the
           // first n without a root below kappa_max.

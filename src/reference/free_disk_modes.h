@@ -83,7 +83,7 @@ namespace DiskImpact
        * torsional modes.
        */
       std::vector<ModeLabel>
-      lowest_modes(unsigned int n_modes, bool half_disk) const override;
+      lowest_modes(unsigned int n_modes, bool half_domain) const override;
 
     private:
       double nu2;

@@ -61,9 +61,9 @@ namespace DiskImpact
       wave_speed_ratio() const;
 
       /// The lowest @p n_modes elastic modes, each degree n once (m = 0);
-      /// @p half_disk is irrelevant (the meridian holds every m = 0 mode).
+      /// @p half_domain is irrelevant (the meridian holds every m = 0 mode).
       std::vector<ModeLabel>
-      lowest_modes(unsigned int n_modes, bool half_disk) const override;
+      lowest_modes(unsigned int n_modes, bool half_domain) const override;
 
       /// The family of degree n: radial (n = 0) or spheroidal.
       static ModeFamily

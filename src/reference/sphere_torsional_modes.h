@@ -47,7 +47,8 @@ namespace DiskImpact
 
       /// The lowest @p n_modes torsional modes, ascending.
       std::vector<ModeLabel>
-      lowest_modes(unsigned int n_modes, bool half_disk = false) const override;
+      lowest_modes(unsigned int n_modes,
+                   bool         half_domain = false) const override;
 
     private:
       double c_T;

@@ -1,6 +1,9 @@
 #include "base/run_error.h"
-#include "tasks/parameters.h"
-#include "tasks/task_registry.h"
+#include "impact/impact_estimates.h"
+#include "impact/impact_mesh.h"
+#include "impact/impact_simulation.h"
+#include "run/parameters.h"
+#include "run/task_registry.h"
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/utilities.h>
@@ -16,17 +19,16 @@ namespace DiskImpact
   {
     /// Task 'impact': one impact, its time series, summary and a printout.
     void
-    run_impact(const Parameters &parameters, MPI_Comm communicator)
+    run_impact_task(const Parameters &parameters, MPI_Comm communicator)
     {
       ConditionalOStream pcout(std::cout,
                                Utilities::MPI::this_mpi_process(communicator) ==
                                  0);
       pcout << "Impact at v = " << parameters.impact.velocity() << " c"
             << std::endl;
-      const ImpactSummary s = parameters.impact.run(parameters, communicator);
+      const ImpactSummary s = run_impact(parameters, communicator);
       on_root(communicator, [&]() {
-        Impact::write_summary(s,
-                              parameters.run.output_directory + "/summary.csv");
+        write_summary(s, parameters.run.output_directory + "/summary.csv");
       });
       const bool         sphere = parameters.geometry.is_axisymmetric();
       const std::string  model  = sphere ? "1-DOF Hertz" : "1-DOF log law";
@@ -97,16 +99,17 @@ namespace DiskImpact
                                   "impact_*.vtu",
                                   "impact_*.pvtu"};
       task.run = [](const Parameters &parameters, bool, MPI_Comm communicator) {
-        run_impact(parameters, communicator);
+        run_impact_task(parameters, communicator);
       };
       task.check = [](const Parameters &parameters) {
-        parameters.impact.check_time_step(parameters);
+        check_impact_time_step(parameters);
       };
       task.build_largest_mesh = [](const Parameters &parameters,
                                    Triangulation<2> &mesh,
                                    const auto       &cell_budget) {
-        parameters.impact.create_mesh(
-          parameters, mesh, cell_budget(parameters.finite_element.degree));
+        create_impact_mesh(parameters,
+                           mesh,
+                           cell_budget(parameters.finite_element.degree));
       };
       return task;
     }

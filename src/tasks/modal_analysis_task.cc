@@ -3,9 +3,9 @@
 #include "modal/torsional_modal_analysis.h"
 #include "output/csv_table.h"
 #include "reference/sphere_torsional_modes.h"
-#include "tasks/parameters.h"
+#include "run/parameters.h"
+#include "run/task_registry.h"
 #include "tasks/run_checks.h"
-#include "tasks/task_registry.h"
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
@@ -48,7 +48,7 @@ namespace DiskImpact
     void
     compare_with_analytic(const std::vector<ModeResult>  &modes,
                           const Reference::FreeBodyModes &reference,
-                          const bool                      half_disk,
+                          const bool                      half_domain,
                           const std::string              &filename,
                           MPI_Comm                        communicator,
                           ConditionalOStream             &pcout)
@@ -61,7 +61,7 @@ namespace DiskImpact
         else
           max_error = std::max(max_error, std::abs(mode.relative_error()));
       const auto analytic =
-        reference.lowest_modes(modes.size() - n_rigid, half_disk);
+        reference.lowest_modes(modes.size() - n_rigid, half_domain);
       unsigned int n_matching = 0;
       while (n_matching < analytic.size() &&
              modes[n_rigid + n_matching].label == analytic[n_matching])
@@ -154,7 +154,7 @@ namespace DiskImpact
       compare_with_analytic(modes,
                             *analytic_free_modes(parameters.geometry,
                                                  parameters.material),
-                            parameters.geometry.is_half_disk(),
+                            parameters.geometry.has_symmetry_boundary(),
                             parameters.run.output_directory +
                               "/analytic_modes.csv",
                             communicator,

@@ -5,9 +5,9 @@
 #include "base/run_error.h"
 #include "modal/modal_analysis.h"
 #include "output/csv_table.h"
-#include "tasks/parameters.h"
+#include "run/parameters.h"
+#include "run/task_registry.h"
 #include "tasks/run_checks.h"
-#include "tasks/task_registry.h"
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
@@ -81,7 +81,7 @@ namespace DiskImpact
     coarsest.geometry.set_global_refinements(refinement_levels.front());
     // A full disk has every mode of order n >= 1 twice.
     coarsest.modal_solver.set_n_elastic_modes(
-      n_modes_compared * (parameters.geometry.is_half_disk() ? 1 : 2));
+      n_modes_compared * (parameters.geometry.has_symmetry_boundary() ? 1 : 2));
     return coarsest;
   }
 
@@ -98,7 +98,7 @@ namespace DiskImpact
 
     // The distinct analytic modes to follow, and how many computed modes
     // (with multiplicity) it takes to reach the last of them.
-    const bool half = parameters.geometry.is_half_disk();
+    const bool half = parameters.geometry.has_symmetry_boundary();
     const auto reference =
       analytic_free_modes(parameters.geometry, parameters.material);
     std::vector<Reference::ModeLabel> targets;

@@ -5,8 +5,8 @@
 #include "base/renamed_entries.h"
 #include "base/run_error.h"
 #include "output/csv_table.h"
-#include "tasks/parameters.h"
-#include "tasks/task_registry.h"
+#include "run/parameters.h"
+#include "run/task_registry.h"
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>

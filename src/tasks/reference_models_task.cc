@@ -4,14 +4,15 @@
 #include "base/parameter_lists.h"
 #include "base/renamed_entries.h"
 #include "base/run_error.h"
+#include "impact/impact_estimates.h"
 #include "output/csv_table.h"
 #include "reference/collision_ode.h"
 #include "reference/linear_dashpot.h"
 #include "reference/rayleigh_vibration.h"
 #include "reference/schwager_disk.h"
 #include "reference/viscoelastic_spheres.h"
-#include "tasks/parameters.h"
-#include "tasks/task_registry.h"
+#include "run/parameters.h"
+#include "run/task_registry.h"
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
@@ -247,7 +248,7 @@ namespace DiskImpact
                                  const std::string &filename) const
   {
     const double nu2 = parameters.material.in_plane_poisson_ratio();
-    const double C   = parameters.impact.contact_law_constant_value(parameters);
+    const double C   = one_dof_law_constant(parameters);
     const Reference::SchwagerDiskRestitution schwager;
     std::cout << "Disk: log law with C = " << C << " (nu2 = " << nu2
               << "): epsilon of the 1-DOF ODE (force and overlap end) and "
@@ -386,8 +387,8 @@ namespace DiskImpact
   ReferenceModels::tabulate_rayleigh(const Parameters  &parameters,
                                      const std::string &filename) const
   {
-    const double nu2 = parameters.material.in_plane_poisson_ratio();
-    const double C   = parameters.impact.contact_law_constant_value(parameters);
+    const double       nu2 = parameters.material.in_plane_poisson_ratio();
+    const double       C   = one_dof_law_constant(parameters);
     const unsigned int largest =
       *std::max_element(mode_counts.begin(), mode_counts.end());
     std::cout << "Rayleigh: vibration left by the collision, log law with C = "
@@ -474,7 +475,7 @@ namespace DiskImpact
       };
       task.check = [](const Parameters &parameters) {
         parameters.task_parameters<ReferenceModels>().check_velocities(
-          parameters.impact.contact_law_constant_value(parameters));
+          one_dof_law_constant(parameters));
       };
       task.kept_results = [](const Parameters &parameters) {
         return parameters.task_parameters<ReferenceModels>()

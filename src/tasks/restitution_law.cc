@@ -2,13 +2,14 @@
 
 #include "base/input_error.h"
 #include "base/run_error.h"
+#include "impact/impact_estimates.h"
 #include "output/atomic_file.h"
 #include "output/csv_table.h"
 #include "restitution/dem_inputs.h"
 #include "restitution/restitution_fit.h"
-#include "tasks/parameters.h"
+#include "run/parameters.h"
+#include "run/task_registry.h"
 #include "tasks/sweep_task.h"
-#include "tasks/task_registry.h"
 
 #include <deal.II/base/mpi.h>
 
@@ -69,7 +70,7 @@ namespace DiskImpact
       Parameters point = parameters;
       point.material   = parameters.material.with_relaxation_time(A);
       point.impact.set_velocity(v);
-      return point.impact.estimate_collision(point).one_dof_epsilon;
+      return estimate_collision(point).one_dof_epsilon;
     }
 
     struct DissipationFit
@@ -258,7 +259,7 @@ namespace DiskImpact
            << DISKIMPACT_VERSION << "\",\n  \"body\": \""
            << (sphere ? "sphere" : "disk") << "\",\n  \"units\": \""
            << (units.is_si() ? "SI" : "dimensionless")
-           << "\",\n  \"dimensionless_units\": \"" << Impact::units(parameters)
+           << "\",\n  \"dimensionless_units\": \"" << output_units(parameters)
            << "\",\n";
       if (units.is_si())
         json << "  \"si_scales\": {\"R_m\": " << ten_digits(units.length())

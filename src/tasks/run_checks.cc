@@ -1,7 +1,7 @@
 #include "tasks/run_checks.h"
 
 #include "base/run_error.h"
-#include "tasks/parameters.h"
+#include "run/parameters.h"
 
 #include <deal.II/base/mpi.h>
 
@@ -73,8 +73,9 @@ namespace DiskImpact
     const FESystem<2> fe(FE_Q<2>(parameters.finite_element.degree), 2);
     DoFHandler<2>     dof_handler(mesh);
     dof_handler.distribute_dofs(fe);
-    const unsigned int wanted = parameters.modal_solver.n_elastic_modes() +
-                                (parameters.geometry.is_half_disk() ? 1 : 3);
+    const unsigned int wanted =
+      parameters.modal_solver.n_elastic_modes() +
+      (parameters.geometry.has_symmetry_boundary() ? 1 : 3);
     require(2 * wanted <= dof_handler.n_dofs(),
             entry + " needs a finer mesh: " + std::to_string(wanted) +
               " modes (rigid ones included) of a discretization with " +

@@ -2,13 +2,16 @@
 
 #include "base/input_error.h"
 #include "base/run_error.h"
+#include "impact/impact_convergence_study.h"
+#include "impact/impact_estimates.h"
+#include "impact/impact_mesh.h"
+#include "impact/impact_simulation.h"
 #include "output/csv_table.h"
 #include "output/file_lock.h"
 #include "output/hdf5_output.h"
-#include "tasks/impact.h"
-#include "tasks/parameters.h"
+#include "run/parameters.h"
+#include "run/task_registry.h"
 #include "tasks/run_checks.h"
-#include "tasks/task_registry.h"
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
@@ -132,11 +135,11 @@ namespace DiskImpact
       const auto        start      = std::chrono::steady_clock::now();
       ConvergedEpsilon  result;
       if (parameters.impact.estimate_errors())
-        result =
-          parameters.impact_convergence.run(parameters, MPI_COMM_SELF, nullptr);
+        result = ImpactConvergenceStudy(parameters.impact_convergence)
+                   .run(parameters, MPI_COMM_SELF, nullptr);
       else
         {
-          result.base = parameters.impact.run(parameters, MPI_COMM_SELF, false);
+          result.base    = run_impact(parameters, MPI_COMM_SELF, false);
           result.epsilon = result.base.epsilon;
           result.error   = std::nan("");
         }
@@ -499,7 +502,7 @@ namespace DiskImpact
     SweepTable         table(parameters.run.output_directory,
                      sweep_points(parameters),
                      parameters.run.parameters_json,
-                     Impact::units(parameters),
+                     output_units(parameters),
                      parameters.units);
     // Every rank reads the kept rows: all must agree on the pending points.
     collectively(communicator, [&]() {
@@ -611,7 +614,7 @@ namespace DiskImpact
           Parameters point = parameters;
           point.partner    = other;
           point.impact.set_velocity(v);
-          point.impact.check_time_step(point);
+          check_impact_time_step(point);
         }
     require(!impact.velocities().empty(),
             "Impact: 'Velocities' is empty: task 'sweep' needs at least "
@@ -642,15 +645,17 @@ namespace DiskImpact
                      const std::function<double(unsigned int)> &cell_budget)
   {
     in_context("Sweep: the fastest impact's finest mesh", [&]() {
-      Parameters  fastest    = parameters.impact.estimate_errors() ?
-                                 parameters.impact_convergence.finest(parameters) :
-                                 parameters;
+      Parameters fastest =
+        parameters.impact.estimate_errors() ?
+          ImpactConvergenceStudy(parameters.impact_convergence)
+            .finest(parameters) :
+          parameters;
       const auto &velocities = parameters.impact.velocities();
       fastest.impact.set_velocity(
         *std::max_element(velocities.begin(), velocities.end()));
-      fastest.impact.create_mesh(fastest,
-                                 mesh,
-                                 cell_budget(fastest.finite_element.degree));
+      create_impact_mesh(fastest,
+                         mesh,
+                         cell_budget(fastest.finite_element.degree));
     });
   }
 

@@ -2,10 +2,10 @@
 
 #include "base/run_error.h"
 #include "output/output_directory.h"
-#include "tasks/parameters.h"
+#include "run/parameters.h"
+#include "run/task_registry.h"
 #include "tasks/run_checks.h"
 #include "tasks/sweep_task.h"
-#include "tasks/task_registry.h"
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/utilities.h>

@@ -68,13 +68,13 @@ TEST_CASE("axisymmetric mass and strain energy of the sphere",
   const double R = 1.5, E = 2., nu = 0.3, rho = 3.;
   const auto   geometry = sphere(R);
   REQUIRE(geometry.is_axisymmetric());
-  REQUIRE(geometry.is_half_disk());
+  REQUIRE(geometry.has_symmetry_boundary());
   Material material;
   material.set(PlaneModel::axisymmetric, E, nu, rho);
 
   dealii::parallel::distributed::Triangulation<2> triangulation(MPI_COMM_WORLD);
   geometry.create_triangulation(triangulation);
-  ElasticityOperator op(4);
+  ElasticityOperator<2> op(4);
   op.setup(triangulation, geometry);
   op.assemble(material);
 

@@ -37,7 +37,7 @@ TEST_CASE("constraints as a matrix: distribute and set_zero as deal.II's",
     MPI_COMM_WORLD,
     dealii::Triangulation<2>::limit_level_difference_at_vertices);
   geometry.create_triangulation(triangulation);
-  ElasticityOperator op(3);
+  ElasticityOperator<2> op(3);
   op.setup(triangulation, geometry);
 
   // The operator's constraints (homogeneous) and a copy with an

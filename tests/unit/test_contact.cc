@@ -181,7 +181,7 @@ TEST_CASE("contact tangent is the derivative of the contact residual",
 
   dealii::parallel::distributed::Triangulation<2> triangulation(MPI_COMM_WORLD);
   geometry.create_triangulation(triangulation);
-  ElasticityOperator op(2);
+  ElasticityOperator<2> op(2);
   op.setup(triangulation, geometry, true);
 
   const RigidWall wall{dealii::Point<2>(0., 0.),

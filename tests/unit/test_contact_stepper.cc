@@ -95,18 +95,18 @@ namespace
     }
 
     /// A stepper on @p zone, its contact solved to 1e-13 of 0.01 R.
-    std::unique_ptr<ContactStepper>
+    std::unique_ptr<ContactStepper<2>>
     stepper(ContactZone &zone)
     {
-      return std::make_unique<ContactStepper>(op,
-                                              *constraint_map,
-                                              *mass_product,
-                                              zone,
-                                              integrator,
-                                              false,
-                                              factorization,
-                                              0.01,
-                                              MPI_COMM_WORLD);
+      return std::make_unique<ContactStepper<2>>(op,
+                                                 *constraint_map,
+                                                 *mass_product,
+                                                 zone,
+                                                 integrator,
+                                                 false,
+                                                 factorization,
+                                                 0.01,
+                                                 MPI_COMM_WORLD);
     }
 
     /// The uniform velocity -v toward the wall.
@@ -130,7 +130,7 @@ namespace
     }
 
     dealii::parallel::distributed::Triangulation<2> triangulation;
-    ElasticityOperator                              op;
+    ElasticityOperator<2>                           op;
     std::unique_ptr<ConstraintMap>                  constraint_map;
     std::unique_ptr<InterleavedMass>                mass_product;
     TimeIntegrator                                  integrator;

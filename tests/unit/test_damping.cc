@@ -17,23 +17,24 @@ TEST_CASE("Kelvin-Voigt damping tensor", "[material][damping]")
 
   // tau C alone
   CHECK(material.is_viscous());
-  const auto c = material.stiffness_tensor();
-  CHECK((material.damping_tensor() * shear - 0.1 * (c * shear)).norm() ==
+  const auto c = material.stiffness_tensor<2>();
+  CHECK((material.damping_tensor<2>() * shear - 0.1 * (c * shear)).norm() ==
         Approx(0.).margin(1e-15));
 
   // shear viscosity: 2 eta_s dev(eps_dot), nothing for a dilatation
   material.set(PlaneModel::plane_stress, 2., 0.25, 1., 0.);
   material.set_viscosities(0.3, 0.);
-  CHECK((material.damping_tensor() * shear - 0.6 * shear).norm() ==
+  CHECK((material.damping_tensor<2>() * shear - 0.6 * shear).norm() ==
         Approx(0.).margin(1e-15));
-  CHECK((material.damping_tensor() * dilatation).norm() ==
+  CHECK((material.damping_tensor<2>() * dilatation).norm() ==
         Approx(0.).margin(1e-15));
 
   // bulk viscosity: eta_b tr(eps_dot) 1, nothing for a pure shear
   material.set_viscosities(0., 0.7);
-  CHECK((material.damping_tensor() * dilatation - 1.4 * dilatation).norm() ==
+  CHECK((material.damping_tensor<2>() * dilatation - 1.4 * dilatation).norm() ==
         Approx(0.).margin(1e-15));
-  CHECK((material.damping_tensor() * shear).norm() == Approx(0.).margin(1e-15));
+  CHECK((material.damping_tensor<2>() * shear).norm() ==
+        Approx(0.).margin(1e-15));
 
   material.set_viscosities(0., 0.);
   CHECK_FALSE(material.is_viscous());

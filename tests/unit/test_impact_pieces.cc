@@ -8,11 +8,13 @@
 #include "dynamics/factorization.h"
 #include "elasticity/elasticity_operator.h"
 #include "half_disk.h"
+#include "impact/impact_estimates.h"
+#include "impact/impact_operators.h"
+#include "impact/impact_simulation.h"
 #include "material/material.h"
 #include "reference/log_contact_law.h"
 #include "reference/one_dof_impact.h"
-#include "tasks/impact_operators.h"
-#include "tasks/parameters.h"
+#include "run/parameters.h"
 
 #include <deal.II/distributed/tria.h>
 
@@ -51,7 +53,7 @@ namespace
       op.assemble(material);
     }
     dealii::parallel::distributed::Triangulation<2> triangulation;
-    ElasticityOperator                              op;
+    ElasticityOperator<2>                           op;
   };
 } // namespace
 
@@ -332,17 +334,15 @@ end
   Parameters fine      = coarse;
   fine.time_integrator = coarse.time_integrator.with_time_step_scaled(0.5);
 
-  const auto own_coarse = coarse.impact.run(coarse, MPI_COMM_SELF, false);
-  const auto own_fine   = fine.impact.run(fine, MPI_COMM_SELF, false);
+  const auto own_coarse = run_impact(coarse, MPI_COMM_SELF, false);
+  const auto own_fine   = run_impact(fine, MPI_COMM_SELF, false);
   REQUIRE(own_fine.steps > own_coarse.steps);
 
-  const auto shared =
-    std::make_shared<ImpactOperators>(coarse, coarse.impact, MPI_COMM_SELF);
+  const auto shared = std::make_shared<ImpactOperators>(coarse, MPI_COMM_SELF);
   for (const auto *run : {&coarse, &fine, &coarse})
     {
-      const auto &own = run == &fine ? own_fine : own_coarse;
-      const auto  on_shared =
-        run->impact.run(*run, MPI_COMM_SELF, false, shared);
+      const auto &own       = run == &fine ? own_fine : own_coarse;
+      const auto  on_shared = run_impact(*run, MPI_COMM_SELF, false, shared);
       CAPTURE(run == &fine);
       CHECK(on_shared.steps == own.steps);
       CHECK(on_shared.n_dofs == own.n_dofs);

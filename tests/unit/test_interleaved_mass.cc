@@ -43,13 +43,13 @@ namespace
       op.assemble(material);
     }
     dealii::parallel::distributed::Triangulation<2> triangulation;
-    ElasticityOperator                              op;
+    ElasticityOperator<2>                           op;
   };
 
   /// A field with every unconstrained entry nonzero and the constrained
   /// ones zero.
   dealii::PETScWrappers::MPI::Vector
-  test_field(const ElasticityOperator &op)
+  test_field(const ElasticityOperator<2> &op)
   {
     auto x = op.create_vector();
     for (const auto i : op.locally_owned_dofs())

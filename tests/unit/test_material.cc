@@ -40,7 +40,7 @@ TEST_CASE("plane strain is the in-plane part of 3D elasticity", "[material]")
   const double mu     = E / (2 * (1 + nu));
   Material     m;
   m.set(PlaneModel::plane_strain, E, nu, 1.);
-  const auto c = m.stiffness_tensor();
+  const auto c = m.stiffness_tensor<2>();
   CHECK(c[0][0][0][0] == Approx(lambda + 2 * mu).epsilon(1e-14));
   CHECK(c[0][0][1][1] == Approx(lambda).epsilon(1e-14));
   CHECK(c[0][1][0][1] == Approx(mu).epsilon(1e-14));
@@ -54,7 +54,7 @@ TEST_CASE("plane stress stiffness inverts the plane-stress compliance",
   const double E = 3., nu = 0.33;
   Material     m;
   m.set(PlaneModel::plane_stress, E, nu, 1.);
-  const auto            c = m.stiffness_tensor();
+  const auto            c = m.stiffness_tensor<2>();
   SymmetricTensor<2, 2> eps;
   eps[0][0]        = 1. / E;
   eps[1][1]        = -nu / E;
@@ -80,8 +80,8 @@ TEST_CASE("plane strain (E, nu) equals plane stress (E/(1-nu^2), nu/(1-nu))",
                  1.7 / (1 - nu * nu),
                  nu / (1 - nu),
                  2.);
-      CHECK(tensor_difference(strain.stiffness_tensor(),
-                              stress.stiffness_tensor()) < 1e-14);
+      CHECK(tensor_difference(strain.stiffness_tensor<2>(),
+                              stress.stiffness_tensor<2>()) < 1e-14);
       CHECK(strain.in_plane_young_modulus() ==
             Approx(stress.in_plane_young_modulus()));
       CHECK(strain.in_plane_poisson_ratio() ==
@@ -133,18 +133,18 @@ TEST_CASE("constitutive laws give the material's tangents", "[material]")
   elastic.set(PlaneModel::plane_strain, 2., 0.3, 1.);
   viscous.set(PlaneModel::plane_stress, 2., 0.3, 1., 0.05);
   const QuadraturePointState state;
-  const auto                 law = make_constitutive_law(elastic);
+  const auto                 law = make_constitutive_law<2>(elastic);
   CHECK_FALSE(law->is_viscous());
   CHECK_FALSE(law->changes_stiffness());
   CHECK(tensor_difference(law->stiffness_tangent(state),
-                          elastic.stiffness_tensor()) == 0.);
+                          elastic.stiffness_tensor<2>()) == 0.);
   CHECK(law->damping_tangent(state).norm() == 0.);
 
-  const auto kelvin_voigt = make_constitutive_law(viscous);
+  const auto kelvin_voigt = make_constitutive_law<2>(viscous);
   CHECK(kelvin_voigt->is_viscous());
-  CHECK(dynamic_cast<const KelvinVoigtLaw *>(kelvin_voigt.get()));
+  CHECK(dynamic_cast<const KelvinVoigtLaw<2> *>(kelvin_voigt.get()));
   CHECK(tensor_difference(kelvin_voigt->stiffness_tangent(state),
-                          viscous.stiffness_tensor()) == 0.);
+                          viscous.stiffness_tensor<2>()) == 0.);
   CHECK(tensor_difference(kelvin_voigt->damping_tangent(state),
-                          viscous.damping_tensor()) == 0.);
+                          viscous.damping_tensor<2>()) == 0.);
 }

@@ -104,7 +104,7 @@ TEST_CASE("boundary harmonics of interpolated fields", "[labelling][fe]")
       dealii::parallel::distributed::Triangulation<2> triangulation(
         MPI_COMM_WORLD);
       geometry.create_triangulation(triangulation);
-      ElasticityOperator op(2);
+      ElasticityOperator<2> op(2);
       op.setup(triangulation, geometry);
 
       for (const unsigned int n : {0u, 1u, 3u, 5u})

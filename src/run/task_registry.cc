@@ -1,4 +1,4 @@
-#include "tasks/task_registry.h"
+#include "run/task_registry.h"
 
 #include "base/input_error.h"
 

@@ -1,9 +1,8 @@
 #pragma once
 
 #include "dynamics/richardson.h"
-#include "tasks/impact.h"
-
-#include <deal.II/base/parameter_handler.h>
+#include "impact/impact_summary.h"
+#include "run/impact_convergence_parameters.h"
 
 #include <mpi.h>
 
@@ -16,6 +15,7 @@
 namespace DiskImpact
 {
   struct Parameters;
+  struct ImpactOperators;
   class CsvTable;
 
   /// One run of a convergence study.
@@ -72,13 +72,14 @@ namespace DiskImpact
    * the study may instead halve the time step of its last two mesh levels
    * where the time step's part is the one that keeps the bar large.
    */
-  class ImpactConvergenceStudy
+  class ImpactConvergenceStudy : private ImpactConvergenceParameters
   {
   public:
-    static void
-    declare_parameters(dealii::ParameterHandler &prm);
-    void
-    parse_parameters(dealii::ParameterHandler &prm);
+    explicit ImpactConvergenceStudy(
+      const ImpactConvergenceParameters &parameters)
+        : ImpactConvergenceParameters(parameters)
+    {
+    }
 
     /// The study at the velocity of @p parameters, its runs shared out
     /// among the ranks of @p communicator (each run on one rank); @p log
@@ -94,24 +95,16 @@ namespace DiskImpact
     Parameters
     finest(const Parameters &parameters) const;
 
-    /// 'Target error' (0: none) and 'Largest mesh levels'.
-    double
-    target() const
-    {
-      return target_error;
-    }
-    unsigned int
-    largest_levels() const
-    {
-      return largest_mesh_levels;
-    }
-
     /// The runs as a table (factor, level, epsilon, ...).
     static CsvTable
     runs_table(const ConvergedEpsilon &result);
     /// One row per factor (order, limit, error) and one for the total.
     static CsvTable
     estimates_table(const ConvergedEpsilon &result);
+    /// One line of the log: factor, level, DoFs, time step, epsilon, energy
+    /// error, wall time.
+    static std::string
+    describe(const StudyRun &run);
 
   private:
     /// The operators of this rank's runs by mesh level (a degree level
@@ -160,20 +153,5 @@ namespace DiskImpact
             const std::string &factor,
             unsigned int       level,
             unsigned int       time_halvings = 0) const;
-
-    unsigned int mesh_levels           = 3;
-    unsigned int time_step_levels      = 3;
-    unsigned int penalty_levels        = 3;
-    double       target_error          = 0.; ///< 0: exactly mesh_levels
-    unsigned int largest_mesh_levels   = 3;
-    bool         separate_time_step    = false;
-    unsigned int largest_time_halvings = 0;
-    unsigned int degree_levels_from    = 0;  ///< 0: every level refines h
-    double       halve_first_above     = 0.; ///< 0: never
   };
-
-  /// Task 'impact convergence': the study at 'Velocity', printed and
-  /// written to impact_convergence.csv and epsilon_estimate.csv.
-  void
-  run_impact_convergence(const Parameters &parameters, MPI_Comm communicator);
 } // namespace DiskImpact

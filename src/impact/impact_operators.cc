@@ -1,7 +1,9 @@
-#include "tasks/impact_operators.h"
+#include "impact/impact_operators.h"
 
 #include "contact/contact_operator.h"
-#include "tasks/parameters.h"
+#include "impact/impact_estimates.h"
+#include "impact/impact_mesh.h"
+#include "run/parameters.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,27 +13,27 @@ namespace DiskImpact
   using namespace dealii;
 
   ImpactOperators::ImpactOperators(const Parameters &parameters,
-                                   const Impact     &impact,
                                    MPI_Comm          communicator)
       : triangulation(communicator,
                       Triangulation<2>::limit_level_difference_at_vertices)
       , op(parameters.finite_element.degree)
   {
-    const auto  &geometry           = parameters.geometry;
-    const double R                  = geometry.radius();
-    const double largest_half_width = impact.largest_half_width(parameters);
-    impact.create_mesh(parameters, triangulation);
+    const auto  &geometry = parameters.geometry;
+    const double R        = geometry.radius();
+    const double largest_half_width =
+      DiskImpact::largest_half_width(parameters);
+    create_impact_mesh(parameters, triangulation);
     op.setup(triangulation, geometry, false);
     // Two bodies: the penalty k = kappa E / h with the pair's modulus
     // 1 / E = 1 / E2 + 1 / E2' (the wall's with identical bodies, whose gap
     // is twice the wall's).
-    law = parameters.contact.law({impact.contact_modulus(parameters),
+    law = parameters.contact.law({contact_modulus(parameters),
                                   ContactOperator::smallest_edge_face(op),
                                   R});
     // The candidates: edge points whose undeformed gap is below the law's
     // reach plus three times the largest approach the 1-DOF model expects
     // (or the Hertz zone's own gap a^2 / 2R, if larger).
-    const auto estimate = impact.estimate_collision(parameters);
+    const auto estimate = estimate_collision(parameters);
     candidate_bound =
       (law ? law->reach() : 0.) +
       3. * std::max(estimate.largest_compression,

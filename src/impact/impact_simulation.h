@@ -6,10 +6,10 @@
 #include "elasticity/body_motion.h"
 #include "elasticity/constraint_map.h"
 #include "elasticity/elasticity_operator.h"
+#include "impact/impact_operators.h"
+#include "impact/impact_summary.h"
 #include "modal/modal_projection.h"
 #include "output/csv_table.h"
-#include "tasks/impact.h"
-#include "tasks/impact_operators.h"
 
 #include <deal.II/lac/petsc_vector.h>
 
@@ -37,7 +37,6 @@ namespace DiskImpact
     /// With @p operators built for @p parameters (but perhaps another time
     /// step), or null to build them here.
     ImpactSimulation(const Parameters                &parameters,
-                     const Impact                    &impact,
                      MPI_Comm                         communicator,
                      bool                             write_outputs,
                      std::shared_ptr<ImpactOperators> operators = {});
@@ -103,7 +102,6 @@ namespace DiskImpact
     translational_energy(double v_com) const;
 
     const Parameters &parameters;
-    const Impact     &impact;
     MPI_Comm          communicator;
     const bool        with_outputs;
     double            radius;        ///< R
@@ -122,14 +120,14 @@ namespace DiskImpact
 
     /// The mesh and operators, perhaps shared with other runs.
     std::shared_ptr<ImpactOperators> operators;
-    ElasticityOperator              &op;
+    ElasticityOperator<2>           &op;
     /// op's constraints as a matrix, for the time loop.
     const ConstraintMap         &constraint_map;
     std::unique_ptr<ContactZone> zone;
     /// Two bodies (a deformable partner): their centre-of-mass motion.
-    std::unique_ptr<BodyMotion>      bodies;
-    std::unique_ptr<ModalProjection> projection;
-    std::unique_ptr<ContactStepper>  stepper;
+    std::unique_ptr<BodyMotion<2>>     bodies;
+    std::unique_ptr<ModalProjection>   projection;
+    std::unique_ptr<ContactStepper<2>> stepper;
 
     /// The centre of mass's motion along the wall normal: the uniform field
     /// n, its momentum functional M n and the mass n . M n.
@@ -156,4 +154,13 @@ namespace DiskImpact
     std::vector<std::pair<double, std::string>> snapshots;
     std::vector<std::pair<double, std::string>> revolved_snapshots;
   };
+
+  /// One impact of @p parameters (ImpactSimulation); with @p operators, on
+  /// those (built for @p parameters but perhaps another time step) instead
+  /// of its own.
+  ImpactSummary
+  run_impact(const Parameters                &parameters,
+             MPI_Comm                         communicator,
+             bool                             write_time_series = true,
+             std::shared_ptr<ImpactOperators> operators         = {});
 } // namespace DiskImpact

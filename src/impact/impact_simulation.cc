@@ -1,10 +1,11 @@
-#include "tasks/impact_simulation.h"
+#include "impact/impact_simulation.h"
 
 #include "base/run_error.h"
+#include "impact/impact_estimates.h"
 #include "output/atomic_file.h"
 #include "output/hdf5_output.h"
 #include "output/state_output.h"
-#include "tasks/parameters.h"
+#include "run/parameters.h"
 
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/function.h>
@@ -74,7 +75,7 @@ namespace DiskImpact
                const UnitSystem          &unit_system)
     {
       Hdf5Output file(filename);
-      file.write_table("summary", Impact::summary_table(summary));
+      file.write_table("summary", summary_table(summary));
       file.write_table("time_series", series);
       if (modes.n_rows() > 0)
         {
@@ -102,32 +103,29 @@ namespace DiskImpact
   } // namespace
 
   ImpactSimulation::ImpactSimulation(const Parameters &parameters,
-                                     const Impact     &impact,
                                      MPI_Comm          communicator,
                                      const bool        write_outputs,
                                      std::shared_ptr<ImpactOperators> operators)
       : parameters(parameters)
-      , impact(impact)
       , communicator(communicator)
       , with_outputs(write_outputs)
       , radius(parameters.geometry.radius())
       , velocity_unit(parameters.material.velocity_unit())
-      , impact_speed(impact.velocity() * velocity_unit)
+      , impact_speed(parameters.impact.velocity() * velocity_unit)
       , body_mass(parameters.material.density() * parameters.geometry.volume())
       , domain_factor(1. / parameters.geometry.domain_share())
-      , force_unit(Impact::force_unit(parameters))
-      , operators(
-          operators ?
-            std::move(operators) :
-            std::make_shared<ImpactOperators>(parameters, impact, communicator))
+      , force_unit(DiskImpact::force_unit(parameters))
+      , operators(operators ?
+                    std::move(operators) :
+                    std::make_shared<ImpactOperators>(parameters, communicator))
       , op(this->operators->op)
       , constraint_map(*this->operators->constraint_map)
       , series(time_series_table())
   {
-    summary.velocity = impact.velocity();
+    summary.velocity = parameters.impact.velocity();
     (parameters.geometry.is_axisymmetric() ? summary.ramirez_u :
                                              summary.schwager_alpha) =
-      impact.dissipation_parameter(parameters);
+      dissipation_parameter(parameters);
   }
 
   ImpactSummary
@@ -138,7 +136,7 @@ namespace DiskImpact
     dt = parameters.time_integrator.time_step(contact_time_estimate);
     set_initial_state();
     record(0., ContactState());
-    if (impact.snapshot_interval() > 0)
+    if (parameters.impact.snapshot_interval() > 0)
       snapshot();
 
     const auto start = std::chrono::steady_clock::now();
@@ -150,8 +148,8 @@ namespace DiskImpact
           projection->add_sample(stepper->displacement(),
                                  stepper->velocity(),
                                  dt);
-        if (impact.snapshot_interval() > 0 &&
-            summary.steps % impact.snapshot_interval() == 0)
+        if (parameters.impact.snapshot_interval() > 0 &&
+            summary.steps % parameters.impact.snapshot_interval() == 0)
           snapshot();
       }
     while (!collision_over());
@@ -169,12 +167,12 @@ namespace DiskImpact
   void
   ImpactSimulation::estimate_collision()
   {
-    const auto estimate               = impact.estimate_collision(parameters);
-    contact_time_estimate             = estimate.contact_time;
-    approach_estimate                 = estimate.largest_compression;
-    summary.one_dof_contact_time      = estimate.one_dof_contact_time;
-    summary.one_dof_delta_max         = estimate.one_dof_delta_max;
-    summary.one_dof_epsilon           = estimate.one_dof_epsilon;
+    const auto estimate          = DiskImpact::estimate_collision(parameters);
+    contact_time_estimate        = estimate.contact_time;
+    approach_estimate            = estimate.largest_compression;
+    summary.one_dof_contact_time = estimate.one_dof_contact_time;
+    summary.one_dof_delta_max    = estimate.one_dof_delta_max;
+    summary.one_dof_epsilon      = estimate.one_dof_epsilon;
     summary.one_dof_epsilon_overlap   = estimate.one_dof_epsilon_overlap;
     summary.one_dof_epsilon_unloading = estimate.one_dof_epsilon_unloading;
   }
@@ -188,30 +186,31 @@ namespace DiskImpact
     summary.massless_dofs = op.n_massless_dofs();
     summary.n_dofs        = op.get_dof_handler().n_dofs();
     // The modes to project on, of the operator the time stepping uses.
-    if (with_outputs && impact.n_projected_modes() > 0 && !pair)
+    if (with_outputs && parameters.impact.n_projected_modes() > 0 && !pair)
       projection = std::make_unique<ModalProjection>(
         op,
         geometry,
         std::pow(parameters.material.transverse_wave_speed() / radius, 2),
-        impact.n_projected_modes());
+        parameters.impact.n_projected_modes());
     zone    = std::make_unique<ContactZone>(op,
                                          parameters.contact.wall(),
                                          law,
                                          geometry.center(),
                                          operators->candidate_bound,
                                          pair);
-    stepper = std::make_unique<ContactStepper>(op,
-                                               constraint_map,
-                                               *operators->mass_product,
-                                               *zone,
-                                               parameters.time_integrator,
-                                               !law,
-                                               operators->factorization,
-                                               approach_estimate,
-                                               communicator);
+    stepper = std::make_unique<ContactStepper<2>>(op,
+                                                  constraint_map,
+                                                  *operators->mass_product,
+                                                  *zone,
+                                                  parameters.time_integrator,
+                                                  !law,
+                                                  operators->factorization,
+                                                  approach_estimate,
+                                                  communicator);
     if (pair)
-      bodies =
-        std::make_unique<BodyMotion>(op, parameters.contact.wall().normal, 2);
+      bodies = std::make_unique<BodyMotion<2>>(op,
+                                               parameters.contact.wall().normal,
+                                               2);
   }
 
   void
@@ -380,7 +379,7 @@ namespace DiskImpact
                         previous_time;
       }
     if (contact_end >= 0. &&
-        t >= contact_end * (1. + impact.time_after_contact()))
+        t >= contact_end * (1. + parameters.impact.time_after_contact()))
       return true;
     if (t > 20. * contact_time_estimate)
       throw RunError("impact: the contact has not ended after " +
@@ -405,7 +404,7 @@ namespace DiskImpact
     // SI run).
     const FieldScales scales = parameters.units.field_scales();
     const double time = stepper->time() * velocity_unit / radius * scales.time;
-    if (impact.revolved_view() > 0.)
+    if (parameters.impact.revolved_view() > 0.)
       {
         const auto [flat, revolved] =
           write_deformed_and_revolved_state(op,
@@ -414,7 +413,7 @@ namespace DiskImpact
                                             ghosted_u,
                                             parameters.geometry.center(),
                                             radius,
-                                            impact.revolved_view(),
+                                            parameters.impact.revolved_view(),
                                             directory,
                                             "impact",
                                             snapshots.size(),
@@ -581,8 +580,21 @@ namespace DiskImpact
                  final_u,
                  final_v,
                  parameters.run.parameters_json,
-                 Impact::units(parameters),
+                 output_units(parameters),
                  parameters.units);
     });
+  }
+
+  ImpactSummary
+  run_impact(const Parameters                &parameters,
+             MPI_Comm                         communicator,
+             const bool                       write_time_series,
+             std::shared_ptr<ImpactOperators> operators)
+  {
+    return ImpactSimulation(parameters,
+                            communicator,
+                            write_time_series,
+                            std::move(operators))
+      .run();
   }
 } // namespace DiskImpact

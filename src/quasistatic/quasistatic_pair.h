@@ -111,7 +111,7 @@ namespace DiskImpact
     double                                          approach_scale = 0.;
     MPI_Comm                                        communicator;
     dealii::parallel::distributed::Triangulation<2> triangulation;
-    ElasticityOperator                              op;
+    ElasticityOperator<2>                           op;
     double                                          h_contact = 0.;
     std::unique_ptr<ContactZone>                    zone;
     std::unique_ptr<CondensedSolver>                solver;

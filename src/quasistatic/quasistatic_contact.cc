@@ -1,4 +1,4 @@
-#include "tasks/quasistatic_contact.h"
+#include "quasistatic/quasistatic_contact.h"
 
 #include "base/input_error.h"
 #include "base/parameter_lists.h"
@@ -7,16 +7,16 @@
 #include "contact/penalty_law.h"
 #include "dynamics/factorization.h"
 #include "elasticity/elasticity_operator.h"
+#include "impact/impact_estimates.h"
+#include "impact/impact_mesh.h"
 #include "output/atomic_file.h"
 #include "output/csv_table.h"
 #include "output/state_output.h"
+#include "quasistatic/quasistatic_pair.h"
 #include "reference/sphere_finite_size.h"
 #include "reference/two_body_contact.h"
 #include "reference/wall_contact_theory.h"
-#include "tasks/impact.h"
-#include "tasks/parameters.h"
-#include "tasks/quasistatic_pair.h"
-#include "tasks/task_registry.h"
+#include "run/parameters.h"
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/data_out_base.h>
@@ -94,7 +94,7 @@ namespace DiskImpact
       const double                            domain_force;
       MPI_Comm                                communicator;
       parallel::distributed::Triangulation<2> triangulation;
-      ElasticityOperator                      op;
+      ElasticityOperator<2>                   op;
       std::unique_ptr<ContactOperator>        contact;
       PETScWrappers::MPI::Vector              body_force;
       PETScWrappers::MPI::Vector              solution;
@@ -374,8 +374,7 @@ namespace DiskImpact
         parameters.partner.create_pair_triangulation(geometry,
                                                      triangulation,
                                                      max_cells);
-        const auto [body, partner] =
-          parameters.impact.contact_bodies(parameters);
+        const auto [body, partner] = contact_bodies(parameters);
         a =
           Reference::two_body_half_width(sphere,
                                          load * theory->force_unit(body.modulus,
@@ -619,50 +618,4 @@ namespace DiskImpact
       });
     });
   }
-
-  namespace
-  {
-    TaskEntry
-    quasistatic_contact_task()
-    {
-      TaskEntry task;
-      task.name        = "quasistatic contact";
-      task.description = "the half body pressed on the wall (or its partner) "
-                         "by a body force, the contact law delta(P) "
-                         "(contact_law.csv).";
-      task.traits.partner_body = true;
-      task.result_files        = {"contact_law.csv",
-                                  "pressure_profile.csv",
-                                  "contact.pvd",
-                                  "contact_*.vtu",
-                                  "contact_*.pvtu"};
-      add_own_parameters<QuasistaticContact>(task);
-      task.run = [](const Parameters &parameters, bool, MPI_Comm communicator) {
-        parameters.task_parameters<QuasistaticContact>().run(parameters,
-                                                             communicator);
-      };
-      task.check = [](const Parameters &parameters) {
-        require(parameters.geometry.is_half_disk(),
-                "Task 'quasistatic contact' needs 'Domain = half disk' (the "
-                "symmetry condition holds the rigid motions the wall does "
-                "not)");
-        parameters.contact.check_wall(parameters.geometry, 0.);
-        require(parameters.contact.law_name() == "penalty",
-                "Task 'quasistatic contact' needs 'Law = penalty' in "
-                "subsection Contact");
-      };
-      task.build_largest_mesh = [](const Parameters &parameters,
-                                   Triangulation<2> &mesh,
-                                   const auto       &cell_budget) {
-        parameters.task_parameters<QuasistaticContact>().create_mesh(
-          parameters,
-          parameters.task_parameters<QuasistaticContact>().largest_load(),
-          mesh,
-          cell_budget(parameters.finite_element.degree));
-      };
-      return task;
-    }
-  } // namespace
-
-  DISKIMPACT_REGISTER_TASK(quasistatic_contact_task())
 } // namespace DiskImpact

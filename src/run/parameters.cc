@@ -1,4 +1,4 @@
-#include "tasks/parameters.h"
+#include "run/parameters.h"
 
 #include "base/input_error.h"
 #include "base/parameter_json.h"
@@ -76,8 +76,8 @@ namespace DiskImpact
     ModalSolver::declare_parameters(prm);
     ContactParameters::declare_parameters(prm);
     TimeIntegrator::declare_parameters(prm);
-    Impact::declare_parameters(prm);
-    ImpactConvergenceStudy::declare_parameters(prm);
+    ImpactParameters::declare_parameters(prm);
+    ImpactConvergenceParameters::declare_parameters(prm);
     Tasks::declare_own_parameters(prm);
   }
 

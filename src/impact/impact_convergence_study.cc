@@ -1,12 +1,11 @@
-#include "tasks/impact_convergence_study.h"
+#include "impact/impact_convergence_study.h"
 
 #include "base/input_error.h"
 #include "base/run_error.h"
+#include "impact/impact_operators.h"
+#include "impact/impact_simulation.h"
 #include "output/csv_table.h"
-#include "tasks/impact_operators.h"
-#include "tasks/parameters.h"
-#include "tasks/run_checks.h"
-#include "tasks/task_registry.h"
+#include "run/parameters.h"
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/utilities.h>
@@ -57,139 +56,7 @@ namespace DiskImpact
       return {-1, -1};
     }
 
-    std::string
-    describe(const StudyRun &run)
-    {
-      std::ostringstream line;
-      // a level with further time step halvings as "level+halvings"
-      const std::string level =
-        std::to_string(run.level) +
-        (run.time_halvings > 0 ? "+" + std::to_string(run.time_halvings) : "");
-      line << std::setw(10) << run.factor << std::setw(4) << level
-           << std::setw(7) << run.summary.n_dofs << std::setw(12)
-           << std::scientific << std::setprecision(3) << run.summary.time_step
-           << std::fixed << std::setprecision(8) << std::setw(13)
-           << run.summary.epsilon << std::scientific << std::setprecision(1)
-           << std::setw(10) << run.summary.energy_error << std::fixed
-           << std::setprecision(1) << std::setw(8) << run.wall_time << " s\n";
-      return line.str();
-    }
   } // namespace
-
-  void
-  ImpactConvergenceStudy::declare_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Impact convergence");
-    prm.declare_entry("Mesh levels",
-                      "3",
-                      Patterns::Integer(1, 6),
-                      "Runs with every element size and the time step halved "
-                      "0, 1, ... times (global refinements + 1, twice the "
-                      "elements across the contact, half the grading, half "
-                      "the time step) [-]; 1: no mesh study.");
-    prm.declare_entry("Time step levels",
-                      "1",
-                      Patterns::Integer(1, 8),
-                      "Runs with the time step alone halved 0, 1, ... times "
-                      "[-]: a diagnostic, reported but not added to the error "
-                      "bar, which the mesh sequence (with its time step) "
-                      "already carries.");
-    prm.declare_entry("Penalty levels",
-                      "1",
-                      Patterns::Integer(1, 6),
-                      "Runs with the penalty factor alone multiplied by 4 0, "
-                      "1, ... times [-]: a diagnostic, reported but not added "
-                      "to the error bar (the penalty k = kappa E2 / h already "
-                      "stiffens in the mesh sequence).");
-    prm.declare_entry("Target error",
-                      "0",
-                      Patterns::Double(0.),
-                      "Add mesh levels beyond 'Mesh levels', one at a time, "
-                      "while epsilon's error bar exceeds this, up to "
-                      "'Largest mesh levels' [-]; 0: exactly 'Mesh levels'. "
-                      "A sweep adds them per point.");
-    prm.declare_entry("Separate time step error",
-                      "false",
-                      Patterns::Bool(),
-                      "Also run the last mesh level's coarser mesh with the "
-                      "last level's time step, and where the mesh sequence "
-                      "is not clean let the error bar be at least "
-                      "3 (|d_t| + |d_h|), the last difference split into "
-                      "its time-step part d_t and its mesh part d_h: errors "
-                      "of the two that cancel in the last difference then "
-                      "cannot make the bar small.");
-    prm.declare_entry("Largest mesh levels",
-                      "4",
-                      Patterns::Integer(1, 6),
-                      "With a 'Target error': the most mesh levels a study "
-                      "may run [-]; at least 'Mesh levels'.");
-    prm.declare_entry("Largest time step halvings",
-                      "0",
-                      Patterns::Integer(0, 4),
-                      "With a 'Target error' and 'Separate time step error': "
-                      "the most times the study may halve the time step of "
-                      "its last two mesh levels instead of adding a mesh "
-                      "level, which it does while the time step's part of "
-                      "the last difference is at least half the mesh's. A "
-                      "mesh level added after a halving keeps the finest "
-                      "step where the finest mesh's own halving moved "
-                      "epsilon by less than half the mesh's part, else "
-                      "halves it too [-]; 0: never.");
-    prm.declare_entry("Halve first above",
-                      "0",
-                      Patterns::Double(0., 1.),
-                      "With 'Largest time step halvings' > 0 and two 'Mesh "
-                      "levels': the split run (the base mesh at the second "
-                      "level's time step) runs first, and where the time "
-                      "step's part it shows, 3 |d_t|, is at least this share "
-                      "of the 'Target error', the second mesh level runs at "
-                      "the halved time step at once, with its split run: "
-                      "its run at the unhalved step would only show that "
-                      "the halving is needed [-]; 0: never.");
-    prm.declare_entry("Degree levels from",
-                      "0",
-                      Patterns::Integer(0, 6),
-                      "Mesh levels from this one on keep the mesh of the "
-                      "level before and raise the element degree by one "
-                      "instead; each still halves the time step and doubles "
-                      "the penalty factor, as halving the element size "
-                      "doubles k = kappa E2 / h [-]; 0: every level halves "
-                      "the element size.");
-    prm.leave_subsection();
-  }
-
-  void
-  ImpactConvergenceStudy::parse_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Impact convergence");
-    mesh_levels           = prm.get_integer("Mesh levels");
-    time_step_levels      = prm.get_integer("Time step levels");
-    penalty_levels        = prm.get_integer("Penalty levels");
-    target_error          = prm.get_double("Target error");
-    largest_mesh_levels   = prm.get_integer("Largest mesh levels");
-    separate_time_step    = prm.get_bool("Separate time step error");
-    largest_time_halvings = prm.get_integer("Largest time step halvings");
-    degree_levels_from    = prm.get_integer("Degree levels from");
-    halve_first_above     = prm.get_double("Halve first above");
-    prm.leave_subsection();
-    require(halve_first_above == 0. ||
-              (largest_time_halvings > 0 && mesh_levels == 2),
-            "Impact convergence: 'Halve first above' > 0 needs 'Largest "
-            "time step halvings' > 0 and 'Mesh levels = 2'");
-    require(degree_levels_from != 1,
-            "Impact convergence: 'Degree levels from = 1' would leave the "
-            "base mesh unrefined in every level; use 0 (never) or >= 2");
-    require(largest_time_halvings == 0 ||
-              (target_error > 0. && separate_time_step),
-            "Impact convergence: 'Largest time step halvings' > 0 needs a "
-            "'Target error' and 'Separate time step error = true'");
-    require(target_error == 0. ||
-              (mesh_levels >= 2 && largest_mesh_levels >= mesh_levels),
-            "Impact convergence: a 'Target error' needs 'Mesh levels' >= 2 "
-            "and 'Largest mesh levels' >= 'Mesh levels' (here " +
-              std::to_string(mesh_levels) + " and " +
-              std::to_string(largest_mesh_levels) + ")");
-  }
 
   Parameters
   ImpactConvergenceStudy::refined(const Parameters  &parameters,
@@ -241,9 +108,7 @@ namespace DiskImpact
   Parameters
   ImpactConvergenceStudy::finest(const Parameters &parameters) const
   {
-    return refined(parameters,
-                   "mesh",
-                   (target_error > 0. ? largest_mesh_levels : mesh_levels) - 1);
+    return refined(parameters, "mesh", finest_mesh_levels() - 1);
   }
 
   std::vector<StudyRun>
@@ -295,12 +160,11 @@ namespace DiskImpact
             {
               auto &kept = shared[m];
               if (!kept)
-                kept = std::make_shared<ImpactOperators>(points[i],
-                                                         points[i].impact,
-                                                         MPI_COMM_SELF);
+                kept =
+                  std::make_shared<ImpactOperators>(points[i], MPI_COMM_SELF);
               operators = kept;
             }
-          s = points[i].impact.run(points[i], MPI_COMM_SELF, false, operators);
+          s = run_impact(points[i], MPI_COMM_SELF, false, operators);
         }
       catch (const std::exception &e)
         {
@@ -646,100 +510,21 @@ namespace DiskImpact
     return table;
   }
 
-  namespace
+  std::string
+  ImpactConvergenceStudy::describe(const StudyRun &run)
   {
-    /// Why @p e was not extrapolated (empty if it was).
-    std::string
-    why_not_clean(const RichardsonEstimate &e)
-    {
-      return e.clean ? "" : "  (not extrapolated: " + e.not_clean_because + ")";
-    }
-  } // namespace
-
-  void
-  run_impact_convergence(const Parameters &parameters, MPI_Comm communicator)
-  {
-    const bool root = Utilities::MPI::this_mpi_process(communicator) == 0;
-    ConditionalOStream pcout(std::cout, root);
-    pcout << "Convergence study of epsilon at v = "
-          << parameters.impact.velocity()
-          << " c, runs of rank 0 as they end:\n";
-    const auto result =
-      parameters.impact_convergence.run(parameters,
-                                        communicator,
-                                        root ? &std::cout : nullptr);
-    const std::string &directory = parameters.run.output_directory;
-    on_root(communicator, [&]() {
-      ImpactConvergenceStudy::runs_table(result).write(
-        directory + "/impact_convergence.csv");
-      ImpactConvergenceStudy::estimates_table(result).write(
-        directory + "/epsilon_estimate.csv");
-    });
-    std::ostringstream out;
-    out << "All runs:\n";
-    for (const auto &run : result.runs)
-      out << describe(run);
-    out << "  factor      order   limit        error\n";
-    for (unsigned int i = 0; i < result.factors.size(); ++i)
-      {
-        const auto &e = result.estimates[i];
-        out << std::setw(10) << result.factors[i] << std::fixed
-            << std::setprecision(2) << std::setw(7) << e.order
-            << std::setprecision(8) << std::setw(13) << e.extrapolated
-            << std::scientific << std::setprecision(2) << std::setw(10)
-            << e.error
-            << (result.factors[i] == "split" ?
-                  "  (the last mesh difference's time-step and mesh parts "
-                  "apart)" :
-                  why_not_clean(e))
-            << '\n';
-      }
-    out << std::fixed << std::setprecision(8)
-        << "  epsilon = " << result.epsilon << " +- " << std::scientific
-        << std::setprecision(2) << result.error << '\n';
-    const double target = parameters.impact_convergence.target();
-    if (target > 0. && result.error > target)
-      out << "  (the target error " << target << " is not reached with "
-          << parameters.impact_convergence.largest_levels()
-          << " mesh levels)\n";
-    pcout << out.str();
+    std::ostringstream line;
+    // a level with further time step halvings as "level+halvings"
+    const std::string level =
+      std::to_string(run.level) +
+      (run.time_halvings > 0 ? "+" + std::to_string(run.time_halvings) : "");
+    line << std::setw(10) << run.factor << std::setw(4) << level << std::setw(7)
+         << run.summary.n_dofs << std::setw(12) << std::scientific
+         << std::setprecision(3) << run.summary.time_step << std::fixed
+         << std::setprecision(8) << std::setw(13) << run.summary.epsilon
+         << std::scientific << std::setprecision(1) << std::setw(10)
+         << run.summary.energy_error << std::fixed << std::setprecision(1)
+         << std::setw(8) << run.wall_time << " s\n";
+    return line.str();
   }
-
-  namespace
-  {
-    TaskEntry
-    impact_convergence_task()
-    {
-      TaskEntry task;
-      task.name           = "impact convergence";
-      task.description    = "the impact on ever finer meshes, time steps and "
-                            "penalties, epsilon extrapolated with its error bar "
-                            "(impact_convergence.csv, epsilon_estimate.csv).";
-      task.traits.impacts = true;
-      task.traits.partner_body      = true;
-      task.traits.one_mesh_per_rank = true;
-      task.result_files = {"impact_convergence.csv", "epsilon_estimate.csv"};
-      task.run = [](const Parameters &parameters, bool, MPI_Comm communicator) {
-        run_impact_convergence(parameters, communicator);
-      };
-      task.check = [](const Parameters &parameters) {
-        parameters.impact.check_time_step(parameters);
-      };
-      task.build_largest_mesh = [](const Parameters &parameters,
-                                   Triangulation<2> &mesh,
-                                   const auto       &cell_budget) {
-        in_context("Impact convergence: the finest of 'Mesh levels'", [&]() {
-          // a degree level's budget is its own degree's
-          const Parameters finest =
-            parameters.impact_convergence.finest(parameters);
-          finest.impact.create_mesh(finest,
-                                    mesh,
-                                    cell_budget(finest.finite_element.degree));
-        });
-      };
-      return task;
-    }
-  } // namespace
-
-  DISKIMPACT_REGISTER_TASK(impact_convergence_task())
 } // namespace DiskImpact

@@ -10,9 +10,9 @@
 #include "elasticity/elasticity_operator.h"
 #include "material/material.h"
 #include "modal/modal_solver.h"
-#include "tasks/impact.h"
-#include "tasks/impact_convergence_study.h"
-#include "tasks/task_registry.h"
+#include "run/impact_convergence_parameters.h"
+#include "run/impact_parameters.h"
+#include "run/task_registry.h"
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -53,17 +53,17 @@ namespace DiskImpact
       return std::any_cast<const T &>(own_parameters);
     }
 
-    RunParameters           run;
-    UnitSystem              units;
-    BodyGeometry            geometry;
-    Material                material;
-    Partner                 partner;
-    FiniteElementParameters finite_element;
-    ModalSolver             modal_solver;
-    ContactParameters       contact;
-    TimeIntegrator          time_integrator;
-    Impact                  impact;
-    ImpactConvergenceStudy  impact_convergence;
+    RunParameters               run;
+    UnitSystem                  units;
+    BodyGeometry                geometry;
+    Material                    material;
+    Partner                     partner;
+    FiniteElementParameters     finite_element;
+    ModalSolver                 modal_solver;
+    ContactParameters           contact;
+    TimeIntegrator              time_integrator;
+    ImpactParameters            impact;
+    ImpactConvergenceParameters impact_convergence;
 
     /// The task's own subsection, parsed (TaskEntry::parse_parameters).
     std::any own_parameters;

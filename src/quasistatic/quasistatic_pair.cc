@@ -1,12 +1,13 @@
-#include "tasks/quasistatic_pair.h"
+#include "quasistatic/quasistatic_pair.h"
 
 #include "base/run_error.h"
 #include "contact/contact_operator.h"
+#include "impact/impact_estimates.h"
+#include "impact/impact_mesh.h"
 #include "output/state_output.h"
+#include "quasistatic/quasistatic_contact.h"
 #include "reference/wall_contact_theory.h"
-#include "tasks/impact.h"
-#include "tasks/parameters.h"
-#include "tasks/quasistatic_contact.h"
+#include "run/parameters.h"
 
 #include <deal.II/base/utilities.h>
 
@@ -23,7 +24,7 @@ namespace DiskImpact
                                    MPI_Comm          communicator)
       : parameters(parameters)
       , load(load)
-      , pair(parameters.impact.contact_bodies(parameters))
+      , pair(contact_bodies(parameters))
       , total_force(
           load *
           Reference::wall_contact_theory(parameters.geometry.is_axisymmetric())
@@ -65,7 +66,7 @@ namespace DiskImpact
     // reach (out to about 1.7 a); solve() checks that the contact stays
     // within the inner half.
     const auto law = parameters.contact.law(
-      {Impact::contact_modulus(parameters), h_contact, geometry.radius()});
+      {contact_modulus(parameters), h_contact, geometry.radius()});
     const double bound =
       law->reach() + 1.5 * a_hertz * a_hertz / effective_radius;
     zone = std::make_unique<ContactZone>(

@@ -17,7 +17,6 @@
 namespace DiskImpact
 {
   struct Parameters;
-  class Impact;
 
   /**
    * The part of an impact's set-up that does not depend on the time step:
@@ -32,16 +31,14 @@ namespace DiskImpact
   struct ImpactOperators
   {
     /// Build and assemble on @p communicator. Collective.
-    ImpactOperators(const Parameters &parameters,
-                    const Impact     &impact,
-                    MPI_Comm          communicator);
+    ImpactOperators(const Parameters &parameters, MPI_Comm communicator);
 
     /// Each body's material, by material id.
     static std::vector<Material>
     materials(const Parameters &parameters);
 
     dealii::parallel::distributed::Triangulation<2> triangulation;
-    ElasticityOperator                              op;
+    ElasticityOperator<2>                           op;
     /// op's constraints as a matrix, for the time loop.
     std::unique_ptr<ConstraintMap> constraint_map;
     /// The product with op's mass matrix, for the time loop.

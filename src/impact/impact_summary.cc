@@ -1,0 +1,66 @@
+#include "impact/impact_summary.h"
+
+#include "output/csv_table.h"
+
+namespace DiskImpact
+{
+  void
+  write_summary(const ImpactSummary &s, const std::string &filename)
+  {
+    summary_table(s).write(filename);
+  }
+
+  CsvTable
+  summary_table(const ImpactSummary &s)
+  {
+    CsvTable table({"velocity",
+                    "epsilon",
+                    "contact_time",
+                    "delta_max",
+                    "force_max",
+                    "energy_error",
+                    "steps",
+                    "newton_iterations",
+                    "impulse_error",
+                    "time_step",
+                    "n_dofs",
+                    "factorizations",
+                    "triangular_solves",
+                    "one_dof_contact_time",
+                    "one_dof_delta_max",
+                    "alpha",
+                    "one_dof_epsilon",
+                    "one_dof_epsilon_overlap",
+                    "vibration_fraction",
+                    "partner_vibration_fraction",
+                    "momentum_error",
+                    "one_dof_epsilon_unloading",
+                    "ramirez_u"});
+    table.start_row();
+    for (const double value : {s.velocity,
+                               s.epsilon,
+                               s.contact_time,
+                               s.delta_max,
+                               s.force_max,
+                               s.energy_error})
+      table.add(value);
+    table.add(s.steps);
+    table.add(s.newton_iterations);
+    table.add(s.impulse_error);
+    table.add(s.time_step);
+    table.add(s.n_dofs);
+    table.add(s.factorizations);
+    table.add(s.triangular_solves);
+    table.add(s.one_dof_contact_time);
+    table.add(s.one_dof_delta_max);
+    table.add(s.schwager_alpha);
+    table.add(s.one_dof_epsilon);
+    table.add(s.one_dof_epsilon_overlap);
+    table.add(s.vibration_fraction);
+    table.add(s.partner_vibration_fraction);
+    table.add(s.momentum_error);
+    table.add(s.one_dof_epsilon_unloading);
+    table.add(s.ramirez_u);
+    return table;
+  }
+} // namespace DiskImpact

@@ -1,0 +1,53 @@
+#pragma once
+
+#include <cmath>
+#include <string>
+
+namespace DiskImpact
+{
+  class CsvTable;
+
+  /// What one impact gives (lengths in units of R, velocities of c).
+  struct ImpactSummary
+  {
+    double       velocity          = 0.; ///< v_i / c
+    double       epsilon           = 0.; ///< -v_com,final / v_com,initial
+    double       contact_time      = 0.; ///< [R / c]
+    double       delta_max         = 0.; ///< largest centre-of-mass approach
+    double       force_max         = 0.; ///< largest force / (E2 R)
+    double       energy_error      = 0.; ///< max |E(t) - E(0)| / E(0)
+    double       impulse_error     = 0.; ///< |m dv - sum F dt| / (m v_i)
+    unsigned int steps             = 0;
+    unsigned int newton_iterations = 0;
+    unsigned int factorizations    = 0;
+    unsigned int triangular_solves = 0;
+    unsigned int n_dofs            = 0;
+    double       time_step         = 0.;     ///< [R / c]
+    double       wall_time_loop    = 0.;     ///< time stepping only [s]
+    double       triangular_solve_time = 0.; ///< mean time of one solve [s]
+    unsigned int contact_dofs  = 0; ///< DoFs the contact was condensed on
+    unsigned int massless_dofs = 0; ///< DoFs without inertia
+    /// Impact::dissipation_parameter(): Schwager's alpha of a disk, NaN
+    /// for a sphere; Ramírez et al.'s u of a sphere, NaN for a disk.
+    double schwager_alpha            = std::nan("");
+    double ramirez_u                 = std::nan("");
+    double one_dof_contact_time      = 0.; ///< 1-DOF log law [R / c]
+    double one_dof_delta_max         = 0.; ///< 1-DOF log law, / R
+    double one_dof_epsilon           = 1.; ///< 1-DOF law with viscosity
+    double one_dof_epsilon_overlap   = 1.; ///< the same, ended at zero overlap
+    double one_dof_epsilon_unloading = 1.; ///< Kelvin-Voigt unloading law
+    /// The energy left in the body's vibration / E(0); with a partner
+    /// also the partner's, and |m1 v1 + m2 v2| / (m* v_i) at the end (NaN
+    /// for a wall), m* = m1 m2 / (m1 + m2).
+    double vibration_fraction         = std::nan("");
+    double partner_vibration_fraction = std::nan("");
+    double momentum_error             = std::nan("");
+  };
+
+  /// The one-row summary table of @p summary (summary.csv).
+  CsvTable
+  summary_table(const ImpactSummary &summary);
+  /// summary.csv with one row.
+  void
+  write_summary(const ImpactSummary &summary, const std::string &filename);
+} // namespace DiskImpact
