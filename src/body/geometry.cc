@@ -95,6 +95,14 @@ namespace DiskImpact
                         "the meridian half disk y >= 0 (x along the impact "
                         "axis, y = r the distance from it), which takes no "
                         "'Domain' and no 'Plane model'.");
+      prm.declare_entry("Dimension",
+                        "2",
+                        Patterns::Integer(2, 3),
+                        "2: the disk in a plane model, or the sphere's "
+                        "meridian (axisymmetric). 3: the body itself in "
+                        "three dimensions, so far the whole sphere ('Body = "
+                        "sphere', no 'Domain', 'Mesh file' or 'Contact "
+                        "refinements') for the task 'modal analysis'.");
       prm.declare_entry("Radius",
                         "1",
                         Patterns::Double(),
@@ -137,11 +145,15 @@ namespace DiskImpact
                                  const bool        half_disk_by_default)
   {
     prm.enter_subsection("Geometry");
-    body_kind   = prm.get("Body") == "sphere" ? Body::sphere : Body::disk;
-    body_radius = prm.get_double("Radius");
+    body_kind       = prm.get("Body") == "sphere" ? Body::sphere : Body::disk;
+    body_radius     = prm.get_double("Radius");
+    space_dimension = prm.get_integer("Dimension");
     const std::string domain = prm.get("Domain");
-    symmetry_boundary = body_kind == Body::sphere || domain == "half disk" ||
-                        (domain.empty() && half_disk_by_default);
+    // In three dimensions the whole body; in two a sphere's meridian ends
+    // on the axis.
+    symmetry_boundary = space_dimension == 2 &&
+                        (body_kind == Body::sphere || domain == "half disk" ||
+                         (domain.empty() && half_disk_by_default));
     mesh_file             = prm.get("Mesh file");
     n_global_refinements  = prm.get_integer("Global refinements");
     n_contact_refinements = prm.get_integer("Contact refinements");
@@ -151,6 +163,12 @@ namespace DiskImpact
             "Geometry: 'Domain = " + domain +
               "' is a disk entry; a sphere's domain is always its meridian "
               "(remove 'Domain')");
+    require(space_dimension == 2 ||
+              (body_kind == Body::sphere && mesh_file.empty() &&
+               n_contact_refinements == 0),
+            "Geometry: 'Dimension = 3' is the whole sphere so far: it needs "
+            "'Body = sphere' and takes no 'Mesh file' or 'Contact "
+            "refinements'");
     require(body_radius > 0,
             "Geometry: 'Radius' must be positive, got " +
               std::to_string(body_radius));
@@ -167,6 +185,12 @@ namespace DiskImpact
     return body_radius;
   }
 
+  unsigned int
+  BodyGeometry::dimension() const
+  {
+    return space_dimension;
+  }
+
   Body
   BodyGeometry::body() const
   {
@@ -176,7 +200,7 @@ namespace DiskImpact
   bool
   BodyGeometry::is_axisymmetric() const
   {
-    return body_kind == Body::sphere;
+    return body_kind == Body::sphere && space_dimension == 2;
   }
 
   bool
@@ -232,6 +256,10 @@ namespace DiskImpact
   std::string
   BodyGeometry::description() const
   {
+    if (space_dimension == 3)
+      return "sphere in 3D, R = " + std::to_string(body_radius) +
+             ", built-in mesh, " + std::to_string(n_global_refinements) +
+             " global refinements";
     return std::string(body_kind == Body::sphere ? "sphere (meridian)" :
                        symmetry_boundary         ? "half disk" :
                                                    "full disk") +

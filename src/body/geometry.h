@@ -108,6 +108,10 @@ namespace DiskImpact
 
     double
     radius() const;
+    /// 'Dimension': 2 (a plane model or the sphere's meridian) or 3 (the
+    /// body itself, create_solid_triangulation()).
+    unsigned int
+    dimension() const;
     Body
     body() const;
     /// Whether the body is a sphere (axisymmetric on its meridian).
@@ -182,6 +186,7 @@ namespace DiskImpact
     refine_toward_contact_point(dealii::Triangulation<2> &triangulation) const;
 
     Body         body_kind         = Body::disk;
+    unsigned int space_dimension   = 2;
     double       body_radius       = 1.;
     bool         symmetry_boundary = false;
     std::string  mesh_file;

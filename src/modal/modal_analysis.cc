@@ -96,15 +96,8 @@ namespace DiskImpact
   std::vector<ModeResult>
   ModalAnalysis::run(const unsigned int n_elastic)
   {
-    {
-      TimerOutput::Scope scope(timer, "assembly");
-      op.assemble(material);
-    }
-    // Eigenvalues in units of (c_T / R)^2: the rigid-body modes lie many
-    // orders below 1, the lowest elastic mode (2,0) near 1.
     const double scale =
-      std::pow(material.transverse_wave_speed() / geometry.radius(), 2);
-    op.move_constrained_eigenvalues(1e10 * scale);
+      assemble_eigenproblem(op, material, geometry.radius(), timer);
 
     const unsigned int n_rigid = geometry.has_symmetry_boundary() ? 1 : 3;
     {

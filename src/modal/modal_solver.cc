@@ -3,6 +3,8 @@
 #include "base/petsc_check.h"
 #include "base/run_error.h"
 #include "elasticity/discrete_operator.h"
+#include "elasticity/elasticity_operator.h"
+#include "material/material.h"
 
 #include <slepceps.h>
 
@@ -80,10 +82,11 @@ namespace DiskImpact
     return relative_tolerance;
   }
 
+  template <int dim>
   ModalBasis
-  ModalSolver::solve(const DiscreteOperator<2> &op,
-                     const unsigned int         n_wanted,
-                     const double               shift) const
+  ModalSolver::solve(const DiscreteOperator<dim> &op,
+                     const unsigned int           n_wanted,
+                     const double                 shift) const
   {
     const Mat stiffness = op.stiffness_matrix();
     const Mat mass      = op.mass_matrix();
@@ -161,4 +164,35 @@ namespace DiskImpact
     return basis;
   }
 
+  template ModalBasis
+  ModalSolver::solve(const DiscreteOperator<2> &, unsigned int, double) const;
+  template ModalBasis
+  ModalSolver::solve(const DiscreteOperator<3> &, unsigned int, double) const;
+
+  template <int dim>
+  double
+  assemble_eigenproblem(ElasticityOperator<dim> &op,
+                        const Material          &material,
+                        const double             radius,
+                        TimerOutput             &timer)
+  {
+    {
+      TimerOutput::Scope scope(timer, "assembly");
+      op.assemble(material);
+    }
+    const double scale = std::pow(material.transverse_wave_speed() / radius, 2);
+    op.move_constrained_eigenvalues(1e10 * scale);
+    return scale;
+  }
+
+  template double
+  assemble_eigenproblem(ElasticityOperator<2> &,
+                        const Material &,
+                        double,
+                        TimerOutput &);
+  template double
+  assemble_eigenproblem(ElasticityOperator<3> &,
+                        const Material &,
+                        double,
+                        TimerOutput &);
 } // namespace DiskImpact

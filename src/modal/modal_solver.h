@@ -1,6 +1,7 @@
 #pragma once
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
 
 #include <deal.II/lac/petsc_vector.h>
 
@@ -10,6 +11,9 @@ namespace DiskImpact
 {
   template <int dim>
   class DiscreteOperator;
+  template <int dim>
+  class ElasticityOperator;
+  class Material;
 
   /// Eigenpairs K phi = omega^2 M phi, ascending, phi M-orthonormal.
   struct ModalBasis
@@ -54,14 +58,28 @@ namespace DiskImpact
      * TorsionOperator), whose matrices must be assembled. @p shift is the
      * (negative) shift of the spectral transformation.
      */
+    template <int dim>
     ModalBasis
-    solve(const DiscreteOperator<2> &op,
-          unsigned int               n_wanted,
-          double                     shift) const;
+    solve(const DiscreteOperator<dim> &op,
+          unsigned int                 n_wanted,
+          double                       shift) const;
 
   private:
     unsigned int n_modes            = 40;
     unsigned int n_torsional        = 0;
     double       relative_tolerance = 1e-10;
   };
+
+  /**
+   * Assemble @p op for @p material (timed as "assembly" in @p timer) and
+   * move its constrained eigenvalues far above the spectrum; returns the
+   * eigenvalue unit (c_T / R)^2, R = @p radius: the rigid-body modes lie
+   * many orders below it, the lowest elastic ones near it.
+   */
+  template <int dim>
+  double
+  assemble_eigenproblem(ElasticityOperator<dim> &op,
+                        const Material          &material,
+                        double                   radius,
+                        dealii::TimerOutput     &timer);
 } // namespace DiskImpact

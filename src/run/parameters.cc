@@ -105,7 +105,11 @@ namespace DiskImpact
   {
     geometry.parse_parameters(prm, !task().traits.modal);
     material.parse_parameters(prm);
-    if (geometry.is_axisymmetric())
+    require(geometry.dimension() == 2 || task().traits.three_dimensional,
+            "Geometry: 'Dimension = 3' is computed by the task 'modal "
+            "analysis' so far; task '" +
+              run.task + "' takes 'Dimension = 2'");
+    if (geometry.body() == Body::sphere)
       {
         require(!material.plane_model_given(),
                 "Material: 'Plane model' is a disk entry; a sphere "
@@ -133,9 +137,13 @@ namespace DiskImpact
             "Impact: 'Revolved view' is a sphere's 3D view; a disk's "
             "ParaView output is impact.pvd (set 'Revolved view = 0')");
     require(geometry.is_axisymmetric() || modal_solver.n_torsional_modes() == 0,
-            "Modal analysis: 'Torsional modes' are a sphere's azimuthal "
-            "modes; a disk's torsional modes (n = 0) are among its in-plane "
-            "modes (set 'Torsional modes = 0')");
+            geometry.dimension() == 3 ?
+              "Modal analysis: 'Torsional modes' are the meridian's azimuthal "
+              "modes; the 3D sphere's torsional modes are among its modes "
+              "(set 'Torsional modes = 0')" :
+              "Modal analysis: 'Torsional modes' are a sphere's azimuthal "
+              "modes; a disk's torsional modes (n = 0) are among its "
+              "in-plane modes (set 'Torsional modes = 0')");
     // The disk's reduced models (Schwager 2007, Gerl & Zippelius 1999, Schwager
     // & Pöschel 2007) have no sphere version.
     require(!geometry.is_axisymmetric() || task().traits.sphere,

@@ -33,6 +33,8 @@ namespace DiskImpact
     bool partner_body = false;
     /// Computes a sphere ('Body = sphere').
     bool sphere = true;
+    /// Computes three-dimensional bodies ('Dimension = 3').
+    bool three_dimensional = false;
   };
 
   /**

@@ -1,5 +1,6 @@
 #include "base/run_error.h"
 #include "modal/modal_analysis.h"
+#include "modal/solid_modal_analysis.h"
 #include "modal/torsional_modal_analysis.h"
 #include "output/csv_table.h"
 #include "reference/sphere_torsional_modes.h"
@@ -117,9 +118,62 @@ namespace DiskImpact
      * compared with the analytic Bessel modes. Writes modes.csv,
      * analytic_modes.csv and the mode shapes (modes.pvd), prints the table.
      */
+    /**
+     * Task 'modal analysis' of a body in three dimensions: its modes,
+     * labelled from their shapes, against Lamb's. Writes modes.csv, prints
+     * one line per multiplet.
+     */
+    void
+    run_solid_modal_analysis(const Parameters &parameters,
+                             MPI_Comm          communicator)
+    {
+      ConditionalOStream pcout(std::cout,
+                               Utilities::MPI::this_mpi_process(communicator) ==
+                                 0);
+      TimerOutput timer(pcout, TimerOutput::never, TimerOutput::wall_times);
+      SolidModalAnalysis analysis(parameters.geometry,
+                                  parameters.material,
+                                  parameters.finite_element.degree,
+                                  parameters.modal_solver,
+                                  communicator,
+                                  timer);
+      pcout << "Mesh: the sphere in 3D, " << analysis.n_cells() << " cells, "
+            << analysis.n_dofs() << " DoFs (Q"
+            << parameters.finite_element.degree << ", mapping of degree "
+            << parameters.finite_element.degree << ")" << std::endl;
+      const auto modes =
+        analysis.run(parameters.modal_solver.n_elastic_modes());
+      on_root(communicator, [&]() {
+        SolidModalAnalysis::write_modes_csv(modes,
+                                            parameters.run.output_directory +
+                                              "/modes.csv");
+      });
+      SolidModalAnalysis::print_table(modes, pcout);
+      unsigned int n_elastic = 0, n_labelled = 0;
+      double       largest_error = 0.;
+      for (const auto &mode : modes)
+        if (!mode.is_rigid())
+          {
+            ++n_elastic;
+            if (mode.labelled)
+              {
+                ++n_labelled;
+                largest_error =
+                  std::max(largest_error, std::abs(mode.relative_error()));
+              }
+          }
+      pcout << modes.size() - n_elastic << " rigid-body modes, " << n_elastic
+            << " elastic modes, " << n_labelled
+            << " labelled; largest relative error against Lamb's "
+            << largest_error << std::endl;
+      timer.print_summary();
+    }
+
     void
     run_modal_analysis(const Parameters &parameters, MPI_Comm communicator)
     {
+      if (parameters.geometry.dimension() == 3)
+        return run_solid_modal_analysis(parameters, communicator);
       ConditionalOStream pcout(std::cout,
                                Utilities::MPI::this_mpi_process(communicator) ==
                                  0);
@@ -175,11 +229,12 @@ namespace DiskImpact
       task.description  = "the lowest modes of the free body compared with "
                           "the analytic ones (modes.csv).";
       task.traits.modal = true;
-      task.result_files = {"modes.csv",
-                           "analytic_modes.csv",
-                           "modes.pvd",
-                           "modes_*.vtu",
-                           "modes_*.pvtu"};
+      task.traits.three_dimensional = true;
+      task.result_files             = {"modes.csv",
+                                       "analytic_modes.csv",
+                                       "modes.pvd",
+                                       "modes_*.vtu",
+                                       "modes_*.pvtu"};
       task.run = [](const Parameters &parameters, bool, MPI_Comm communicator) {
         run_modal_analysis(parameters, communicator);
       };
