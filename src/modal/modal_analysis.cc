@@ -190,37 +190,10 @@ namespace DiskImpact
   ModalAnalysis::write_mode_shapes(const std::vector<ModeResult> &modes,
                                    const std::string &directory) const
   {
-    // One file, one vector field per mode ("mode_007"), so the mesh and the
-    // curved patches are built once.
-    const std::vector<DataComponentInterpretation::DataComponentInterpretation>
-      vector_field(2, DataComponentInterpretation::component_is_part_of_vector);
-    DataOut<2>                              data_out;
-    std::vector<PETScWrappers::MPI::Vector> ghosted;
-    data_out.attach_dof_handler(op.get_dof_handler());
+    std::vector<unsigned int> indices;
     for (const auto &mode : modes)
-      ghosted.push_back(op.create_ghosted(basis.modes[mode.index]));
-    for (unsigned int i = 0; i < modes.size(); ++i)
-      data_out.add_data_vector(
-        ghosted[i],
-        std::vector<std::string>(2,
-                                 "mode_" +
-                                   Utilities::int_to_string(modes[i].index, 3)),
-        DataOut<2>::type_dof_data,
-        vector_field);
-    data_out.build_patches(op.get_mapping(),
-                           op.degree(),
-                           DataOut<2>::curved_inner_cells);
-    DataOutBase::VtkFlags flags;
-    flags.compression_level =
-      DataOutBase::VtkFlags::ZlibCompressionLevel::best_speed;
-    data_out.set_flags(flags);
-    const std::string name =
-      write_vtu_record(data_out, directory, "modes", 0, communicator);
-    on_root(communicator, [&]() {
-      write_atomically(directory + "/modes.pvd", [&](std::ostream &out) {
-        DataOutBase::write_pvd_record(out, {{0., name}});
-      });
-    });
+      indices.push_back(mode.index);
+    DiskImpact::write_mode_shapes(op, basis, indices, directory);
   }
 
   void

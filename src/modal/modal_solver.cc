@@ -5,6 +5,12 @@
 #include "elasticity/discrete_operator.h"
 #include "elasticity/elasticity_operator.h"
 #include "material/material.h"
+#include "output/atomic_file.h"
+#include "output/vtu_record.h"
+
+#include <deal.II/base/utilities.h>
+
+#include <deal.II/numerics/data_out.h>
 
 #include <slepceps.h>
 
@@ -195,4 +201,57 @@ namespace DiskImpact
                         const Material &,
                         double,
                         TimerOutput &);
+
+  template <int dim>
+  void
+  write_mode_shapes(const DiscreteOperator<dim>     &op,
+                    const ModalBasis                &basis,
+                    const std::vector<unsigned int> &indices,
+                    const std::string               &directory)
+  {
+    // One file, one vector field per mode ("mode_007"), so the mesh and the
+    // curved patches are built once.
+    const std::vector<DataComponentInterpretation::DataComponentInterpretation>
+                                            vector_field(dim,
+                   DataComponentInterpretation::component_is_part_of_vector);
+    DataOut<dim>                            data_out;
+    std::vector<PETScWrappers::MPI::Vector> ghosted;
+    data_out.attach_dof_handler(op.get_dof_handler());
+    for (const unsigned int index : indices)
+      ghosted.push_back(op.create_ghosted(basis.modes[index]));
+    for (unsigned int i = 0; i < indices.size(); ++i)
+      data_out.add_data_vector(
+        ghosted[i],
+        std::vector<std::string>(dim,
+                                 "mode_" +
+                                   Utilities::int_to_string(indices[i], 3)),
+        DataOut<dim>::type_dof_data,
+        vector_field);
+    data_out.build_patches(op.get_mapping(),
+                           op.degree(),
+                           DataOut<dim>::curved_inner_cells);
+    DataOutBase::VtkFlags flags;
+    flags.compression_level =
+      DataOutBase::VtkFlags::ZlibCompressionLevel::best_speed;
+    data_out.set_flags(flags);
+    const MPI_Comm    communicator = op.get_dof_handler().get_communicator();
+    const std::string name =
+      write_vtu_record(data_out, directory, "modes", 0, communicator);
+    on_root(communicator, [&]() {
+      write_atomically(directory + "/modes.pvd", [&](std::ostream &out) {
+        DataOutBase::write_pvd_record(out, {{0., name}});
+      });
+    });
+  }
+
+  template void
+  write_mode_shapes(const DiscreteOperator<2> &,
+                    const ModalBasis &,
+                    const std::vector<unsigned int> &,
+                    const std::string &);
+  template void
+  write_mode_shapes(const DiscreteOperator<3> &,
+                    const ModalBasis &,
+                    const std::vector<unsigned int> &,
+                    const std::string &);
 } // namespace DiskImpact

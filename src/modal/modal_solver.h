@@ -5,6 +5,7 @@
 
 #include <deal.II/lac/petsc_vector.h>
 
+#include <string>
 #include <vector>
 
 namespace DiskImpact
@@ -82,4 +83,16 @@ namespace DiskImpact
                         const Material          &material,
                         double                   radius,
                         dealii::TimerOutput     &timer);
+
+  /**
+   * The modes @p indices of @p basis, eigenvectors of @p op, as one vector
+   * field each ("mode_007" for mode 7) in @p directory/modes.pvd and its
+   * .vtu files, on the cells curved by @p op's mapping. Collective.
+   */
+  template <int dim>
+  void
+  write_mode_shapes(const DiscreteOperator<dim>     &op,
+                    const ModalBasis                &basis,
+                    const std::vector<unsigned int> &indices,
+                    const std::string               &directory);
 } // namespace DiskImpact

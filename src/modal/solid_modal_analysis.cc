@@ -161,7 +161,6 @@ namespace DiskImpact
     // Beyond the modes asked for, enough to complete a multiplet of degree
     // up to 10.
     constexpr unsigned int n_rigid = 6, n_completing = 21;
-    ModalBasis             basis;
     {
       TimerOutput::Scope scope(timer, "eigensolver");
       basis = solver.solve(op, n_rigid + n_elastic + n_completing, -scale);
@@ -191,6 +190,17 @@ namespace DiskImpact
                 ExcMessage("the last multiplet exceeds the modes computed"));
     modes.resize(keep);
     return modes;
+  }
+
+  void
+  SolidModalAnalysis::write_mode_shapes(
+    const std::vector<SolidModeResult> &modes,
+    const std::string                  &directory) const
+  {
+    std::vector<unsigned int> indices;
+    for (const auto &mode : modes)
+      indices.push_back(mode.index);
+    DiskImpact::write_mode_shapes(op, basis, indices, directory);
   }
 
   void

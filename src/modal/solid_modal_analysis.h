@@ -84,6 +84,10 @@ namespace DiskImpact
     static void
     write_modes_csv(const std::vector<SolidModeResult> &modes,
                     const std::string                  &filename);
+    /// Mode shapes (field mode_NNN per mode) as modes.pvd + modes_*.vtu.
+    void
+    write_mode_shapes(const std::vector<SolidModeResult> &modes,
+                      const std::string                  &directory) const;
     /// The frequency table on the terminal, one line per multiplet.
     static void
     print_table(const std::vector<SolidModeResult> &modes,
@@ -105,5 +109,6 @@ namespace DiskImpact
     dealii::TimerOutput                            &timer;
     dealii::parallel::distributed::Triangulation<3> triangulation;
     ElasticityOperator<3>                           op;
+    ModalBasis                                      basis;
   };
 } // namespace DiskImpact

@@ -79,6 +79,12 @@ namespace DiskImpact
                    unsigned int,
                    MPI_Comm);
   template std::string
+  write_vtu_record(const DataOutInterface<3, 3> &,
+                   const std::string &,
+                   const std::string &,
+                   unsigned int,
+                   MPI_Comm);
+  template std::string
   write_vtu_record(const DataOutInterface<2, 3> &,
                    const std::string &,
                    const std::string &,

@@ -120,8 +120,8 @@ namespace DiskImpact
      */
     /**
      * Task 'modal analysis' of a body in three dimensions: its modes,
-     * labelled from their shapes, against Lamb's. Writes modes.csv, prints
-     * one line per multiplet.
+     * labelled from their shapes, against Lamb's. Writes modes.csv and the
+     * mode shapes (modes.pvd), prints one line per multiplet.
      */
     void
     run_solid_modal_analysis(const Parameters &parameters,
@@ -143,11 +143,15 @@ namespace DiskImpact
             << parameters.finite_element.degree << ")" << std::endl;
       const auto modes =
         analysis.run(parameters.modal_solver.n_elastic_modes());
-      on_root(communicator, [&]() {
-        SolidModalAnalysis::write_modes_csv(modes,
-                                            parameters.run.output_directory +
-                                              "/modes.csv");
-      });
+      {
+        TimerOutput::Scope scope(timer, "output");
+        analysis.write_mode_shapes(modes, parameters.run.output_directory);
+        on_root(communicator, [&]() {
+          SolidModalAnalysis::write_modes_csv(modes,
+                                              parameters.run.output_directory +
+                                                "/modes.csv");
+        });
+      }
       SolidModalAnalysis::print_table(modes, pcout);
       unsigned int n_elastic = 0, n_labelled = 0;
       double       largest_error = 0.;

@@ -5,12 +5,13 @@ each multiplet of degree n with its 2n + 1 modes next to each other; the
 multiplets in the order of Lamb's frequencies; the torsional frequencies
 the roots of Lamb's equation (n - 1) j_n(xi) - xi j_{n+1}(xi) = 0,
 xi = omega R / c_T, found here with scipy; every relative error to Lamb's
-frequency below a bound.
+frequency below a bound; the mode shapes written (modes.pvd).
 
 usage: check_solid_modes.py OUTPUT_DIR --max-error E [--c-t C] [--radius R]
 """
 import argparse
 import csv
+import os
 import sys
 
 from scipy.optimize import brentq
@@ -40,6 +41,8 @@ def main():
     with open(a.output_dir + "/modes.csv", newline="") as f:
         modes = list(csv.DictReader(f))
     failures = []
+    if not os.path.exists(a.output_dir + "/modes.pvd"):
+        failures.append("no modes.pvd (the mode shapes)")
     rigid = [m for m in modes if m["family"] == "rigid"]
     if len(rigid) != 6 or modes[:6] != rigid:
         failures.append(f"{len(rigid)} rigid modes, not the six lowest")
