@@ -20,14 +20,19 @@ namespace DiskImpact
 
   template <int dim>
   void
-  refine_toward_contact(Triangulation<dim> &triangulation,
-                        const Point<dim>   &contact_point,
-                        const double        a,
-                        const unsigned int  n_across,
-                        const double        grading,
-                        const double        fine_zone_radius,
-                        const double        max_cells)
+  refine_toward_contact(Triangulation<dim>   &triangulation,
+                        const Point<dim>     &contact_point,
+                        const double          a,
+                        const unsigned int    n_across,
+                        const double          grading,
+                        const double          fine_zone_radius,
+                        const double          max_cells,
+                        const Tensor<1, dim> &contact_line)
   {
+    const auto distance = [&](const Point<dim> &x) {
+      const Tensor<1, dim> r = x - contact_point;
+      return (r - (r * contact_line) * contact_line).norm();
+    };
     const double h_min = a / n_across;
     for (unsigned int step = 0; step < 60; ++step)
       {
@@ -43,8 +48,7 @@ namespace DiskImpact
           if (cell->is_locally_owned())
             {
               const double h = cell->diameter() / std::sqrt(double(dim));
-              const double d =
-                std::max(0., cell->center().distance(contact_point) - h);
+              const double d = std::max(0., distance(cell->center()) - h);
               const double target =
                 h_min + grading * std::max(0., d - fine_zone_radius * a);
               if (h > target)
@@ -66,7 +70,8 @@ namespace DiskImpact
                         unsigned int,
                         double,
                         double,
-                        double);
+                        double,
+                        const Tensor<1, 2> &);
   template void
   refine_toward_contact(Triangulation<3> &,
                         const Point<3> &,
@@ -74,7 +79,8 @@ namespace DiskImpact
                         unsigned int,
                         double,
                         double,
-                        double);
+                        double,
+                        const Tensor<1, 3> &);
 
   std::string
   to_string(const Body body)
@@ -100,9 +106,11 @@ namespace DiskImpact
                         Patterns::Integer(2, 3),
                         "2: the disk in a plane model, or the sphere's "
                         "meridian (axisymmetric). 3: the body itself in "
-                        "three dimensions, so far the whole sphere ('Body = "
-                        "sphere', no 'Domain', 'Mesh file' or 'Contact "
-                        "refinements') for the task 'modal analysis'.");
+                        "three dimensions, so far the sphere ('Body = "
+                        "sphere', no 'Mesh file' or 'Contact refinements'; "
+                        "'Domain' full or quarter sphere) for the tasks "
+                        "'modal analysis', 'impact' and 'impact "
+                        "convergence'.");
       prm.declare_entry("Radius",
                         "1",
                         Patterns::Double(),
@@ -111,14 +119,32 @@ namespace DiskImpact
                         "the origin.");
       prm.declare_entry("Domain",
                         "",
-                        Patterns::Selection("|full disk|half disk"),
-                        "Disks only: 'half disk' (y >= 0, symmetric about "
+                        Patterns::Selection(
+                          "|full disk|half disk|full sphere|quarter sphere"),
+                        "Disks: 'half disk' (y >= 0, symmetric about "
                         "the impact axis y = 0: exact for a head-on impact; "
                         "only modes even about the axis) or 'full disk'. "
                         "Empty: 'full disk' for the tasks 'modal analysis' "
                         "and 'modal convergence', 'half disk' for the "
-                        "others. Must be empty for a sphere, whose domain is "
-                        "its meridian.");
+                        "others. The sphere in 3D: 'quarter sphere' (y >= 0, "
+                        "z >= 0, symmetric about the planes y = 0 and z = 0: "
+                        "exact for a head-on impact) or 'full sphere'; "
+                        "empty: the full sphere for the modal tasks, the "
+                        "quarter for the others. Must be empty for a "
+                        "sphere in 2D, whose domain is its meridian.");
+      prm.declare_entry("Thickness",
+                        "1",
+                        Patterns::Double(),
+                        "A disk in 3D ('Dimension = 3'): its thickness H "
+                        "along z [length], the disk -H/2 <= z <= H/2 (an "
+                        "impact computes the quarter y >= 0, 0 <= z <= H/2). "
+                        "Must be positive.");
+      prm.declare_entry("Faces",
+                        "free",
+                        Patterns::Selection("free|held"),
+                        "A disk in 3D: its flat faces z = +-H/2 free, or "
+                        "held at u_z = 0, which makes it exactly the "
+                        "plane-strain disk.");
       prm.declare_entry("Mesh file",
                         "",
                         Patterns::Anything(),
@@ -149,26 +175,37 @@ namespace DiskImpact
     body_radius     = prm.get_double("Radius");
     space_dimension = prm.get_integer("Dimension");
     const std::string domain = prm.get("Domain");
-    // In three dimensions the whole body; in two a sphere's meridian ends
-    // on the axis.
-    symmetry_boundary = space_dimension == 2 &&
-                        (body_kind == Body::sphere || domain == "half disk" ||
-                         (domain.empty() && half_disk_by_default));
+    // In two dimensions a sphere's meridian ends on the axis; in three the
+    // quarter sphere on its two planes of symmetry.
+    symmetry_boundary     = space_dimension == 2 ?
+                              (body_kind == Body::sphere || domain == "half disk" ||
+                           (domain.empty() && half_disk_by_default)) :
+                              (domain == "quarter sphere" ||
+                           (domain.empty() && half_disk_by_default));
     mesh_file             = prm.get("Mesh file");
     n_global_refinements  = prm.get_integer("Global refinements");
     n_contact_refinements = prm.get_integer("Contact refinements");
+    disk_thickness        = prm.get_double("Thickness");
+    held_faces            = prm.get("Faces") == "held";
     prm.leave_subsection();
 
-    require(body_kind == Body::disk || domain.empty(),
+    require(body_kind == Body::disk || domain.empty() ||
+              (space_dimension == 3 &&
+               domain.find("sphere") != std::string::npos),
             "Geometry: 'Domain = " + domain +
-              "' is a disk entry; a sphere's domain is always its meridian "
-              "(remove 'Domain')");
+              "' is a disk entry; a sphere's domain is its meridian in 2D "
+              "(remove 'Domain'), 'full sphere' or 'quarter sphere' in 3D");
+    require(body_kind == Body::sphere ||
+              domain.find("sphere") == std::string::npos,
+            "Geometry: 'Domain = " + domain + "' is a sphere's entry");
     require(space_dimension == 2 ||
-              (body_kind == Body::sphere && mesh_file.empty() &&
-               n_contact_refinements == 0),
-            "Geometry: 'Dimension = 3' is the whole sphere so far: it needs "
-            "'Body = sphere' and takes no 'Mesh file' or 'Contact "
-            "refinements'");
+              (mesh_file.empty() && n_contact_refinements == 0),
+            "Geometry: 'Dimension = 3' takes the built-in mesh: no 'Mesh "
+            "file' or 'Contact refinements'");
+    require(space_dimension == 2 || body_kind == Body::sphere ||
+              disk_thickness > 0.,
+            "Geometry: 'Thickness' must be positive, got " +
+              std::to_string(disk_thickness));
     require(body_radius > 0,
             "Geometry: 'Radius' must be positive, got " +
               std::to_string(body_radius));
@@ -198,6 +235,12 @@ namespace DiskImpact
   }
 
   bool
+  BodyGeometry::is_sphere() const
+  {
+    return body_kind == Body::sphere;
+  }
+
+  bool
   BodyGeometry::is_axisymmetric() const
   {
     return body_kind == Body::sphere && space_dimension == 2;
@@ -212,7 +255,13 @@ namespace DiskImpact
   double
   BodyGeometry::domain_share() const
   {
-    return symmetry_boundary && body_kind == Body::disk ? 0.5 : 1.;
+    if (space_dimension == 3 && body_kind == Body::disk)
+      return symmetry_boundary ? 0.25 * disk_thickness : disk_thickness;
+    if (!symmetry_boundary)
+      return 1.;
+    if (space_dimension == 3)
+      return 0.25;
+    return body_kind == Body::sphere ? 1. : 0.5;
   }
 
   double
@@ -233,6 +282,18 @@ namespace DiskImpact
   BodyGeometry::contact_point() const
   {
     return Point<2>(0., 0.);
+  }
+
+  double
+  BodyGeometry::thickness() const
+  {
+    return disk_thickness;
+  }
+
+  bool
+  BodyGeometry::faces_held() const
+  {
+    return held_faces;
   }
 
   unsigned int
@@ -256,8 +317,15 @@ namespace DiskImpact
   std::string
   BodyGeometry::description() const
   {
+    if (space_dimension == 3 && body_kind == Body::disk)
+      return std::string(symmetry_boundary ? "quarter of a disk" : "disk") +
+             " in 3D, R = " + std::to_string(body_radius) +
+             ", H = " + std::to_string(disk_thickness) + ", faces " +
+             (held_faces ? "held (u_z = 0)" : "free") + ", built-in mesh, " +
+             std::to_string(n_global_refinements) + " global refinements";
     if (space_dimension == 3)
-      return "sphere in 3D, R = " + std::to_string(body_radius) +
+      return std::string(symmetry_boundary ? "quarter sphere" : "sphere") +
+             " in 3D, R = " + std::to_string(body_radius) +
              ", built-in mesh, " + std::to_string(n_global_refinements) +
              " global refinements";
     return std::string(body_kind == Body::sphere ? "sphere (meridian)" :

@@ -16,7 +16,9 @@ namespace DiskImpact
   /**
    * Boundary ids of the disk (built-in meshes and meshes/disk.geo alike):
    * the curved edge (free, or in contact with the wall) and the diameter on
-   * the impact axis (half disk only, symmetry: u_y = 0).
+   * the impact axis (half disk only, symmetry: u_y = 0). A quarter sphere
+   * in 3D has the symmetry planes y = 0 (symmetry) and z = 0 (symmetry_z,
+   * u_z = 0).
    */
   namespace BoundaryIds
   {
@@ -24,7 +26,21 @@ namespace DiskImpact
     constexpr dealii::types::boundary_id symmetry = 2;
     /// The curved edge of a collision partner (class Partner).
     constexpr dealii::types::boundary_id partner_curved = 3;
+    constexpr dealii::types::boundary_id symmetry_z     = 4;
+    /// The flat faces z = +-H/2 of a disk in 3D (u_z = 0 if held).
+    constexpr dealii::types::boundary_id flat_faces = 5;
   } // namespace BoundaryIds
+
+  /// The point @p x of the plane models in @p dim dimensions (z = 0).
+  template <int dim>
+  dealii::Point<dim>
+  embedded(const dealii::Point<2> &x)
+  {
+    dealii::Point<dim> y;
+    y[0] = x[0];
+    y[1] = x[1];
+    return y;
+  }
 
   /// Manifold id of the curved edge.
   constexpr dealii::types::manifold_id curved_manifold_id = 1;
@@ -56,8 +72,10 @@ namespace DiskImpact
    * (r = @p fine_zone_radius) has size <= a / n_across and, farther out,
    * size <= a / n_across + grading (d - r a), d the distance to the contact
    * point: with r >= 1 the elements across the whole contact zone of
-   * half-width a, not only the smallest, resolve it. Throws an InputError if
-   * the mesh would exceed @p max_cells active cells.
+   * half-width a, not only the smallest, resolve it. With a unit vector
+   * @p contact_line d is the distance to the line through the contact
+   * point along it (a disk's rim in 3D). Throws an InputError if the mesh
+   * would exceed @p max_cells active cells.
    */
   template <int dim>
   void
@@ -68,7 +86,8 @@ namespace DiskImpact
     unsigned int                n_across,
     double                      grading,
     double                      fine_zone_radius,
-    double max_cells = std::numeric_limits<double>::infinity());
+    double max_cells = std::numeric_limits<double>::infinity(),
+    const dealii::Tensor<1, dim> &contact_line = {});
 
   /// The body: a disk (plane strain or plane stress) or a sphere (an
   /// axisymmetric model on its meridian).
@@ -114,19 +133,32 @@ namespace DiskImpact
     dimension() const;
     Body
     body() const;
-    /// Whether the body is a sphere (axisymmetric on its meridian).
+    /// Whether the body is a sphere (on its meridian or in 3D).
+    bool
+    is_sphere() const;
+    /// Whether the model is the sphere's meridian (axisymmetric).
     bool
     is_axisymmetric() const;
     /// Whether the domain is y >= 0 only and ends on the impact axis y = 0
     /// (boundary id BoundaryIds::symmetry, u_y = 0 there): a half disk's
-    /// mirror line, a sphere meridian's axis.
+    /// mirror line, a sphere meridian's axis; in 3D the quarter sphere
+    /// y >= 0, z >= 0 (also BoundaryIds::symmetry_z, u_z = 0 on z = 0).
     bool
     has_symmetry_boundary() const;
     /// The share of the body's loads the computed domain carries: 1/2 for
-    /// a half disk, 1 for a full disk or a sphere (whose meridian's
-    /// integrals are over the whole sphere).
+    /// a half disk, 1/4 for a quarter sphere, 1 for a full disk or a
+    /// sphere (whose meridian's integrals are over the whole sphere). A
+    /// disk's loads are per unit thickness: a disk of thickness H in 3D
+    /// carries H (H/4 its quarter).
     double
     domain_share() const;
+    /// A disk in 3D: its thickness H.
+    double
+    thickness() const;
+    /// A disk in 3D: whether its flat faces are held at u_z = 0 (which
+    /// makes it the plane-strain disk exactly).
+    bool
+    faces_held() const;
     /// The body's volume: pi R^2 for a disk (per unit thickness), 4 pi R^3
     /// / 3 for a sphere.
     double
@@ -187,6 +219,8 @@ namespace DiskImpact
 
     Body         body_kind         = Body::disk;
     unsigned int space_dimension   = 2;
+    double       disk_thickness    = 1.;
+    bool         held_faces        = false;
     double       body_radius       = 1.;
     bool         symmetry_boundary = false;
     std::string  mesh_file;

@@ -9,15 +9,22 @@
 namespace DiskImpact
 {
   /**
-   * The body of subsection Geometry in three dimensions ('Dimension = 3'):
-   * the whole sphere of radius R centred at (R, 0, 0), touching the plane
-   * x = 0 at the origin as the two-dimensional bodies do. Its coarse mesh
-   * is deal.II's balanced ball (32 cells) with the sphere's surface as a
-   * spherical manifold and a transfinite interpolation in the cells next to
-   * it, so that a mapping of the element's degree represents the surface
-   * to that degree; boundary id BoundaryIds::curved on the whole surface.
-   * Throws an InputError if the refined mesh would exceed about
-   * @p max_cells cells.
+   * The body of subsection Geometry in three dimensions ('Dimension = 3'),
+   * centred on (R, 0, 0), touching the plane x = 0 at the origin as the
+   * two-dimensional bodies do; whole, or the quarter y >= 0, z >= 0
+   * (has_symmetry_boundary(), boundary ids BoundaryIds::symmetry and
+   * symmetry_z on its planes).
+   * - The sphere: deal.II's balanced ball (32 cells, 8 in the quarter) with
+   *   the surface as a spherical manifold and a transfinite interpolation
+   *   in the cells next to it.
+   * - The disk of thickness H about the z axis through the centre: the
+   *   plane models' coarse disk extruded along z, the rim (BoundaryIds::
+   *   curved) on a cylindrical manifold, the flat faces BoundaryIds::
+   *   flat_faces.
+   *
+   * A mapping of the element's degree represents the curved surface to
+   * that degree (boundary id BoundaryIds::curved). Throws an InputError if
+   * the refined mesh would exceed about @p max_cells cells.
    */
   void
   create_solid_triangulation(
@@ -25,8 +32,4 @@ namespace DiskImpact
     dealii::Triangulation<3> &triangulation,
     double max_cells = std::numeric_limits<double>::infinity());
 
-  /// The cells of the sphere's mesh after @p refinements global
-  /// refinements: 32 8^refinements.
-  double
-  solid_sphere_cells(unsigned int refinements);
 } // namespace DiskImpact

@@ -6,6 +6,7 @@
 #include <deal.II/base/patterns.h>
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -27,11 +28,38 @@ namespace DiskImpact
     }
   } // namespace
 
-  double
-  RigidWall::gap(const Point<2> &x) const
+  template <int dim>
+  std::array<Tensor<1, dim>, dim - 1>
+  RigidWall<dim>::tangents() const
   {
-    return (x - point) * normal;
+    std::array<Tensor<1, dim>, dim - 1> t;
+    t[0][0] = -normal[1];
+    t[0][1] = normal[0];
+    if constexpr (dim == 3)
+      t[1] = cross_product_3d(normal, t[0]);
+    return t;
   }
+
+  template <int dim>
+  template <int spacedim>
+  RigidWall<spacedim>
+  RigidWall<dim>::embedded() const
+  {
+    RigidWall<spacedim> wall;
+    for (unsigned int d = 0; d < std::min(dim, spacedim); ++d)
+      {
+        wall.point[d]  = point[d];
+        wall.normal[d] = normal[d];
+      }
+    return wall;
+  }
+
+  template struct RigidWall<2>;
+  template struct RigidWall<3>;
+  template RigidWall<2>
+  RigidWall<2>::embedded<2>() const;
+  template RigidWall<3>
+  RigidWall<2>::embedded<3>() const;
 
   ContactParameters::ContactParameters()
       : parsed_law(ContactLaws::create("penalty"))
@@ -109,11 +137,17 @@ namespace DiskImpact
     rigid_wall.normal = normal / normal.norm();
   }
 
-  const RigidWall &
+  template <int dim>
+  RigidWall<dim>
   ContactParameters::wall() const
   {
-    return rigid_wall;
+    return rigid_wall.embedded<dim>();
   }
+
+  template RigidWall<2>
+  ContactParameters::wall<2>() const;
+  template RigidWall<3>
+  ContactParameters::wall<3>() const;
 
   const std::string &
   ContactParameters::law_name() const

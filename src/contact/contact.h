@@ -6,6 +6,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
+#include <array>
 #include <memory>
 #include <string>
 
@@ -14,17 +15,33 @@ namespace DiskImpact
   class BodyGeometry;
 
   /**
-   * A rigid, frictionless plane wall: a point on it and its unit normal,
-   * pointing from the wall toward the disk. The gap of a point x is
-   * g = (x - point) . normal; g < 0 is penetration.
+   * A rigid plane wall: a point on it and its unit normal, pointing from the
+   * wall toward the body. The gap of a point x is g = (x - point) . normal;
+   * g < 0 is penetration. In three dimensions it is the plane wall of the
+   * two-dimensional model extended along z (embedded()).
    */
+  template <int dim>
   struct RigidWall
   {
-    dealii::Point<2>     point;
-    dealii::Tensor<1, 2> normal;
+    dealii::Point<dim>     point;
+    dealii::Tensor<1, dim> normal;
 
     double
-    gap(const dealii::Point<2> &x) const;
+    gap(const dealii::Point<dim> &x) const
+    {
+      return (x - point) * normal;
+    }
+
+    /// An orthonormal basis of the wall's plane: in two dimensions the
+    /// tangent (-n_y, n_x), in three also e_z (the wall contains z).
+    std::array<dealii::Tensor<1, dim>, dim - 1>
+    tangents() const;
+
+    /// The same wall in @p spacedim dimensions: point and normal with zero
+    /// components beyond the plane's.
+    template <int spacedim>
+    RigidWall<spacedim>
+    embedded() const;
   };
 
   /**
@@ -47,7 +64,10 @@ namespace DiskImpact
     void
     parse_parameters(dealii::ParameterHandler &prm);
 
-    const RigidWall &
+    /// The wall, in the plane model's two dimensions or (@p dim = 3)
+    /// extended along z.
+    template <int dim = 2>
+    RigidWall<dim>
     wall() const;
     /// The 'Law' entry: a law's name or 'constraint'.
     const std::string &
@@ -83,6 +103,6 @@ namespace DiskImpact
   private:
     std::string                 name = "penalty";
     std::unique_ptr<ContactLaw> parsed_law;
-    RigidWall                   rigid_wall;
+    RigidWall<2>                rigid_wall;
   };
 } // namespace DiskImpact

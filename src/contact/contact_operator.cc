@@ -27,7 +27,7 @@ namespace DiskImpact
   }
 
   ContactOperator::ContactOperator(const ElasticityOperator<2>      &op,
-                                   const RigidWall                  &wall,
+                                   const RigidWall<2>               &wall,
                                    std::shared_ptr<const ContactLaw> law,
                                    const Point<2> &body_center)
       : op(op)
@@ -155,16 +155,22 @@ namespace DiskImpact
     return all;
   }
 
+  template <int dim>
   double
-  ContactOperator::smallest_edge_face(const ElasticityOperator<2> &op)
+  ContactOperator::smallest_edge_face(const ElasticityOperator<dim> &op)
   {
     double smallest = std::numeric_limits<double>::max();
-    for_each_curved_edge_face(op.get_dof_handler(),
-                              [&](const auto &cell, const unsigned int f) {
-                                smallest =
-                                  std::min(smallest, cell->face(f)->measure());
-                              });
+    for_each_curved_edge_face(
+      op.get_dof_handler(), [&](const auto &cell, const unsigned int f) {
+        const double measure = cell->face(f)->measure();
+        smallest = std::min(smallest, dim == 2 ? measure : std::sqrt(measure));
+      });
     return Utilities::MPI::min(smallest,
                                op.get_dof_handler().get_communicator());
   }
+
+  template double
+  ContactOperator::smallest_edge_face(const ElasticityOperator<2> &);
+  template double
+  ContactOperator::smallest_edge_face(const ElasticityOperator<3> &);
 } // namespace DiskImpact

@@ -50,7 +50,7 @@ namespace DiskImpact
   {
   public:
     ContactOperator(const ElasticityOperator<2>      &op,
-                    const RigidWall                  &wall,
+                    const RigidWall<2>               &wall,
                     std::shared_ptr<const ContactLaw> law,
                     const dealii::Point<2>           &body_center);
 
@@ -68,13 +68,15 @@ namespace DiskImpact
     std::vector<std::pair<double, double>>
     pressure_profile(const dealii::PETScWrappers::MPI::Vector &ghosted_u) const;
 
-    /// The length of the smallest face on the curved edge (over all ranks).
+    /// The size of the smallest face on the curved edge (over all ranks):
+    /// its length, or in three dimensions the square root of its area.
+    template <int dim>
     static double
-    smallest_edge_face(const ElasticityOperator<2> &op);
+    smallest_edge_face(const ElasticityOperator<dim> &op);
 
   private:
     const ElasticityOperator<2>      &op;
-    RigidWall                         wall;
+    RigidWall<2>                      wall;
     std::shared_ptr<const ContactLaw> law;
     /// Where t = 0: the point of the wall nearest the disk's centre.
     dealii::Point<2>     origin;

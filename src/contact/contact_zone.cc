@@ -14,6 +14,7 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -23,15 +24,109 @@ namespace DiskImpact
 {
   using namespace dealii;
 
-  ContactZone::ContactZone(const ElasticityOperator<2>      &op,
-                           const RigidWall                  &wall,
+  namespace
+  {
+    /// One candidate point as the ranks exchange it.
+    template <int dim>
+    struct Candidate
+    {
+      double                                                  ds, gap0, t;
+      dealii::Point<dim>                                      x;
+      std::vector<std::pair<types::global_dof_index, double>> row;
+      std::vector<std::vector<std::pair<types::global_dof_index, double>>>
+        tangential;
+    };
+
+    /**
+     * For each point of @p nodes (the support points of a face, a tensor
+     * grid): the integral over the reference face of its Lagrange
+     * polynomial, times the Jacobian, as the Gauss rule @p gauss with
+     * weights @p weights (JxW times the section's measure) gives it.
+     */
+    template <int facedim>
+    std::vector<double>
+    nodal_shares(const Quadrature<facedim> &nodes,
+                 const Quadrature<facedim> &gauss,
+                 const std::vector<double> &weights)
+    {
+      // The grid's coordinates along one axis, and their 1D Lagrange basis.
+      std::vector<double> coordinates;
+      for (const auto &x : nodes.get_points())
+        if (std::none_of(coordinates.begin(),
+                         coordinates.end(),
+                         [&](const double c) {
+                           return std::abs(c - x[0]) < 1e-12;
+                         }))
+          coordinates.push_back(x[0]);
+      std::vector<dealii::Point<1>> points_1d;
+      for (const double c : coordinates)
+        points_1d.emplace_back(c);
+      const auto lagrange =
+        Polynomials::generate_complete_Lagrange_basis(points_1d);
+      const auto index_of = [&](const double c) {
+        return std::min_element(coordinates.begin(),
+                                coordinates.end(),
+                                [&](const double a, const double b) {
+                                  return std::abs(a - c) < std::abs(b - c);
+                                }) -
+               coordinates.begin();
+      };
+      std::vector<double> shares(nodes.size(), 0.);
+      for (unsigned int q = 0; q < nodes.size(); ++q)
+        for (unsigned int g = 0; g < gauss.size(); ++g)
+          {
+            double value = weights[g];
+            for (unsigned int d = 0; d < facedim; ++d)
+              value *=
+                lagrange[index_of(nodes.point(q)[d])].value(gauss.point(g)[d]);
+            shares[q] += value;
+          }
+      return shares;
+    }
+
+    /// Merge the candidates at one position (a node shared by faces) into
+    /// one point holding all their shares.
+    template <int dim>
+    void
+    merge_shared_nodes(std::vector<Candidate<dim>> &candidates)
+    {
+      if (candidates.empty())
+        return;
+      std::sort(candidates.begin(),
+                candidates.end(),
+                [](const auto &a, const auto &b) { return a.t < b.t; });
+      const double tolerance = 1e-9 * std::max(std::abs(candidates.front().t),
+                                               std::abs(candidates.back().t));
+      std::vector<Candidate<dim>> nodes;
+      for (auto &candidate : candidates)
+        {
+          // Points at one position have t within the tolerance: they are
+          // at the end of the sorted list of nodes so far.
+          auto same = nodes.rbegin();
+          for (; same != nodes.rend() && same->t >= candidate.t - tolerance;
+               ++same)
+            if (candidate.x.distance(same->x) <= tolerance)
+              break;
+          if (same != nodes.rend() && same->t >= candidate.t - tolerance)
+            same->ds += candidate.ds;
+          else
+            nodes.push_back(std::move(candidate));
+        }
+      candidates = std::move(nodes);
+    }
+  } // namespace
+
+  template <int dim>
+  ContactZone::ContactZone(const ElasticityOperator<dim>    &op,
+                           const RigidWall<dim>             &wall,
                            std::shared_ptr<const ContactLaw> law,
-                           const dealii::Point<2>           &body_center,
+                           const dealii::Point<dim>         &body_center,
                            const double                      gap_bound,
-                           const bool                        with_partner)
+                           const bool                        with_partner,
+                           const bool                        circular)
       : law(std::move(law))
       , bound(gap_bound)
-      , axisymmetric(op.get_section().is_axisymmetric())
+      , axisymmetric(circular || op.get_section().is_axisymmetric())
   {
     const auto &dof_handler = op.get_dof_handler();
     const auto &fe          = dof_handler.get_fe();
@@ -39,30 +134,37 @@ namespace DiskImpact
     // More points than the element needs for a law: the pressure has a
     // kink where contact ends inside a face. The constraint acts at the
     // edge nodes, each with its share of the edge.
-    const bool          nodal = !this->law;
-    const QGauss<1>     gauss(fe.degree + 3);
-    const Quadrature<1> quadrature =
-      nodal ? Quadrature<1>(fe.base_element(0).get_unit_face_support_points()) :
-              Quadrature<1>(gauss);
-    FEFaceValues<2> face_values(op.get_mapping(),
-                                fe,
-                                quadrature,
-                                update_values | update_quadrature_points |
-                                  update_JxW_values);
-    FEFaceValues<2> gauss_values(op.get_mapping(),
-                                 fe,
-                                 gauss,
-                                 update_quadrature_points | update_JxW_values);
-    const auto      lagrange =
-      Polynomials::generate_complete_Lagrange_basis(quadrature.get_points());
+    const bool                nodal = !this->law;
+    const QGauss<dim - 1>     gauss(fe.degree + 3);
+    const Quadrature<dim - 1> quadrature =
+      nodal ?
+        Quadrature<dim - 1>(fe.base_element(0).get_unit_face_support_points()) :
+        Quadrature<dim - 1>(gauss);
+    FEFaceValues<dim>                    face_values(op.get_mapping(),
+                                  fe,
+                                  quadrature,
+                                  update_values | update_quadrature_points |
+                                    update_JxW_values);
+    FEFaceValues<dim>                    gauss_values(op.get_mapping(),
+                                   fe,
+                                   gauss,
+                                   update_quadrature_points |
+                                     update_JxW_values);
     const FEValuesExtractors::Vector     displacement(0);
     std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
-    const dealii::Point<2>               origin =
+    const dealii::Point<dim>             origin =
       body_center - wall.gap(body_center) * wall.normal;
-    const Tensor<1, 2> along({-wall.normal[1], wall.normal[0]});
+    const auto tangents = wall.tangents();
+    // The coordinate along the wall: the distance from the origin within
+    // the wall's plane for a circle, else signed along the first tangent.
+    const auto along_wall = [&](const dealii::Point<dim> &x) {
+      const Tensor<1, dim> in_plane =
+        (x - origin) - ((x - origin) * wall.normal) * wall.normal;
+      return circular ? in_plane.norm() : in_plane * tangents[0];
+    };
 
-    // This rank's candidates, flattened for the exchange: ds, g0, t, x, y,
-    // the number of entries, then (DoF, b) pairs; the same for the
+    // This rank's candidates, flattened for the exchange: ds, g0, t, x,
+    // the number of entries, then (DoF, b) pairs; the same for each
     // tangential row.
     std::vector<double> local;
     for_each_curved_edge_face(
@@ -75,16 +177,17 @@ namespace DiskImpact
           return;
         cell->get_dof_indices(dof_indices);
         // ds of each point: its JxW, or at a node the integral of its
-        // Lagrange polynomial along the face.
+        // Lagrange polynomial over the face.
         std::vector<double> ds(quadrature.size(), 0.);
         if (nodal)
           {
             gauss_values.reinit(cell, f);
+            std::vector<double> weights;
             for (const unsigned int g : gauss_values.quadrature_point_indices())
-              for (unsigned int q = 0; q < quadrature.size(); ++q)
-                ds[q] +=
-                  lagrange[q].value(gauss.point(g)[0]) * gauss_values.JxW(g) *
-                  op.get_section().measure(gauss_values.quadrature_point(g));
+              weights.push_back(
+                gauss_values.JxW(g) *
+                op.get_section().measure(gauss_values.quadrature_point(g)));
+            ds = nodal_shares(quadrature, gauss, weights);
           }
         else
           for (const unsigned int q : face_values.quadrature_point_indices())
@@ -92,52 +195,50 @@ namespace DiskImpact
                     op.get_section().measure(face_values.quadrature_point(q));
         for (const unsigned int q : face_values.quadrature_point_indices())
           {
-            ConstrainedRow row, tangential;
+            ConstrainedRow                      row;
+            std::array<ConstrainedRow, dim - 1> tangential;
             for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
               {
                 const auto phi = face_values[displacement].value(i, q);
                 add_to_row(constraints, dof_indices[i], phi * wall.normal, row);
-                add_to_row(constraints,
-                           dof_indices[i],
-                           phi * along,
-                           tangential);
+                for (unsigned int d = 0; d < dim - 1; ++d)
+                  add_to_row(constraints,
+                             dof_indices[i],
+                             phi * tangents[d],
+                             tangential[d]);
               }
             local.insert(local.end(),
-                         {ds[q],
-                          wall.gap(x[q]),
-                          (x[q] - origin) * along,
-                          x[q][0],
-                          x[q][1],
-                          static_cast<double>(row.size())});
+                         {ds[q], wall.gap(x[q]), along_wall(x[q])});
+            for (unsigned int d = 0; d < dim; ++d)
+              local.push_back(x[q][d]);
+            local.push_back(static_cast<double>(row.size()));
             for (const auto &[dof, b] : row)
               local.insert(local.end(), {static_cast<double>(dof), b});
-            local.push_back(static_cast<double>(tangential.size()));
-            for (const auto &[dof, b] : tangential)
-              local.insert(local.end(), {static_cast<double>(dof), b});
+            for (const auto &t_row : tangential)
+              {
+                local.push_back(static_cast<double>(t_row.size()));
+                for (const auto &[dof, b] : t_row)
+                  local.insert(local.end(), {static_cast<double>(dof), b});
+              }
           }
       });
 
     // Every rank holds every candidate, in rank order.
-    struct Candidate
-    {
-      double                                                  ds, gap0, t;
-      dealii::Point<2>                                        x;
-      std::vector<std::pair<types::global_dof_index, double>> row;
-      std::vector<std::pair<types::global_dof_index, double>> tangential;
-    };
-    std::vector<Candidate> candidates;
+    std::vector<Candidate<dim>> candidates;
     for (const auto &part :
          Utilities::MPI::all_gather(dof_handler.get_communicator(), local))
       for (std::size_t k = 0; k < part.size();)
         {
-          Candidate candidate{part[k],
-                              part[k + 1],
-                              part[k + 2],
-                              {part[k + 3], part[k + 4]},
-                              {},
-                              {}};
-          k += 5;
-          for (auto *row : {&candidate.row, &candidate.tangential})
+          Candidate<dim> candidate{
+            part[k], part[k + 1], part[k + 2], {}, {}, {}};
+          k += 3;
+          for (unsigned int d = 0; d < dim; ++d)
+            candidate.x[d] = part[k++];
+          candidate.tangential.resize(dim - 1);
+          std::vector<decltype(candidate.row) *> rows{&candidate.row};
+          for (auto &t_row : candidate.tangential)
+            rows.push_back(&t_row);
+          for (auto *row : rows)
             {
               const auto n_entries = static_cast<std::size_t>(part[k++]);
               for (std::size_t e = 0; e < n_entries; ++e, k += 2)
@@ -146,45 +247,35 @@ namespace DiskImpact
             }
           candidates.push_back(std::move(candidate));
         }
-    // A vertex shared by two faces is one node: one point, both shares.
-    if (nodal && !candidates.empty())
-      {
-        std::sort(candidates.begin(),
-                  candidates.end(),
-                  [](const Candidate &a, const Candidate &b) {
-                    return a.t < b.t;
-                  });
-        const double tolerance = 1e-9 * std::max(std::abs(candidates.front().t),
-                                                 std::abs(candidates.back().t));
-        std::vector<Candidate> nodes{candidates.front()};
-        for (std::size_t k = 1; k < candidates.size(); ++k)
-          if (candidates[k].x.distance(nodes.back().x) <= tolerance)
-            nodes.back().ds += candidates[k].ds;
-          else
-            nodes.push_back(std::move(candidates[k]));
-        candidates = std::move(nodes);
-      }
+    // A node shared by faces is one point with all their shares.
+    if (nodal)
+      merge_shared_nodes(candidates);
     if (with_partner)
       {
-        // The gap is measured to the partner's edge, whose normal
-        // displacement enters with the opposite sign; points that face no
-        // part of it, or face it from beyond the bound, drop out.
-        std::vector<dealii::Point<2>> x;
-        for (const auto &candidate : candidates)
-          x.push_back(candidate.x);
-        const auto             partner = locate_on_partner_edge(op, wall, x);
-        std::vector<Candidate> paired;
-        for (unsigned int k = 0; k < candidates.size(); ++k)
-          if (partner[k] && partner[k]->gap0 < gap_bound)
-            {
-              Candidate candidate = std::move(candidates[k]);
-              candidate.gap0      = partner[k]->gap0;
-              candidate.row.insert(candidate.row.end(),
-                                   partner[k]->row.begin(),
-                                   partner[k]->row.end());
-              paired.push_back(std::move(candidate));
-            }
-        candidates = std::move(paired);
+        if constexpr (dim == 2)
+          {
+            // The gap is measured to the partner's edge, whose normal
+            // displacement enters with the opposite sign; points that face
+            // no part of it, or face it from beyond the bound, drop out.
+            std::vector<dealii::Point<2>> x;
+            for (const auto &candidate : candidates)
+              x.push_back(candidate.x);
+            const auto partner = locate_on_partner_edge(op, wall, x);
+            std::vector<Candidate<dim>> paired;
+            for (unsigned int k = 0; k < candidates.size(); ++k)
+              if (partner[k] && partner[k]->gap0 < gap_bound)
+                {
+                  Candidate<dim> candidate = std::move(candidates[k]);
+                  candidate.gap0           = partner[k]->gap0;
+                  candidate.row.insert(candidate.row.end(),
+                                       partner[k]->row.begin(),
+                                       partner[k]->row.end());
+                  paired.push_back(std::move(candidate));
+                }
+            candidates = std::move(paired);
+          }
+        else
+          throw InputError("a collision partner is two-dimensional so far");
       }
 
     // D sorted; each point's row in positions of D.
@@ -193,14 +284,14 @@ namespace DiskImpact
       for (const auto &entry : candidate.row)
         all_dofs.insert(entry.first);
     dofs.assign(all_dofs.begin(), all_dofs.end());
-    for (const auto &candidate : candidates)
+    for (auto &candidate : candidates)
       {
         Point point{candidate.ds,
                     candidate.gap0,
                     candidate.t,
                     {},
                     {},
-                    candidate.tangential,
+                    std::move(candidate.tangential),
                     {}};
         for (const auto &[dof, b] : candidate.row)
           point.row.emplace_back(
@@ -209,6 +300,21 @@ namespace DiskImpact
       }
     active_position.assign(dofs.size(), -1);
   }
+
+  template ContactZone::ContactZone(const ElasticityOperator<2> &,
+                                    const RigidWall<2> &,
+                                    std::shared_ptr<const ContactLaw>,
+                                    const dealii::Point<2> &,
+                                    double,
+                                    bool,
+                                    bool);
+  template ContactZone::ContactZone(const ElasticityOperator<3> &,
+                                    const RigidWall<3> &,
+                                    std::shared_ptr<const ContactLaw>,
+                                    const dealii::Point<3> &,
+                                    double,
+                                    bool,
+                                    bool);
 
   const std::vector<types::global_dof_index> &
   ContactZone::candidate_dofs() const
@@ -383,15 +489,22 @@ namespace DiskImpact
   }
 
   double
+  ContactZone::share(const unsigned int i) const
+  {
+    return points[i].ds;
+  }
+
+  double
   ContactZone::coordinate_along_wall(const unsigned int i) const
   {
     return points[i].t;
   }
 
   const std::vector<std::pair<types::global_dof_index, double>> &
-  ContactZone::tangential_row(const unsigned int i) const
+  ContactZone::tangential_row(const unsigned int i,
+                              const unsigned int direction) const
   {
-    return points[i].tangential_row;
+    return points[i].tangential_rows[direction];
   }
 
   PointHistory &

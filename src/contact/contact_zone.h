@@ -58,16 +58,22 @@ namespace DiskImpact
   {
   public:
     /// The candidates: points of edge faces with undeformed gap below
-    /// @p gap_bound. With @p with_partner the gap is measured along the
-    /// wall normal to a collision partner's edge (locate_on_partner_edge()),
-    /// and the rows hold both bodies' DoFs. Collective.
-    /// @p law: null for the exact constraint.
-    ContactZone(const ElasticityOperator<2>      &op,
-                const RigidWall                  &wall,
+    /// @p gap_bound. With @p with_partner (two dimensions only) the gap is
+    /// measured along the wall normal to a collision partner's edge
+    /// (locate_on_partner_edge()), and the rows hold both bodies' DoFs.
+    /// Collective. @p law: null for the exact constraint. With
+    /// @p circular (a sphere in 3D) the contact is a circle about the
+    /// contact point: the coordinate along the wall is the distance from
+    /// it; else a strip (the plane models, a disk's rim in 3D): the
+    /// coordinate along the wall's first tangent.
+    template <int dim>
+    ContactZone(const ElasticityOperator<dim>    &op,
+                const RigidWall<dim>             &wall,
                 std::shared_ptr<const ContactLaw> law,
-                const dealii::Point<2>           &body_center,
+                const dealii::Point<dim>         &body_center,
                 double                            gap_bound,
-                bool                              with_partner = false);
+                bool                              with_partner = false,
+                bool                              circular     = false);
 
     /// D, the candidates' DoFs.
     const std::vector<dealii::types::global_dof_index> &
@@ -130,13 +136,19 @@ namespace DiskImpact
     /// The number of candidate points.
     unsigned int
     n_points() const;
+    /// Point @p i's share ds of the surface (dS of its quadrature point, or
+    /// a node's share of its faces).
+    double
+    share(unsigned int i) const;
     /// Point @p i's undeformed coordinate along the wall, from the point of
-    /// the wall nearest the body's centre.
+    /// the wall nearest the body's centre (in three dimensions its distance
+    /// from that point within the wall's plane).
     double
     coordinate_along_wall(unsigned int i) const;
-    /// Point @p i's tangential row: (global DoF, b_t) with t . u = b_t . u.
+    /// Point @p i's tangential row along the wall's tangent @p direction
+    /// (RigidWall::tangents()): (global DoF, b_t) with t . u = b_t . u.
     const std::vector<std::pair<dealii::types::global_dof_index, double>> &
-    tangential_row(unsigned int i) const;
+    tangential_row(unsigned int i, unsigned int direction = 0) const;
     /// Point @p i's history, to read and to update after a step.
     PointHistory &
     history(unsigned int i);
@@ -191,11 +203,12 @@ namespace DiskImpact
       std::vector<std::pair<unsigned int, double>> row; ///< (position in D, b)
       /// (position in C, b) once all its DoFs are active, else empty.
       std::vector<std::pair<unsigned int, double>> active_row;
-      /// The tangential displacement t . u(x_q) = (global DoF, b_t) . u,
-      /// t the wall's tangent: the row of a frictional force (its DoFs
-      /// join D when a law uses it).
-      std::vector<std::pair<dealii::types::global_dof_index, double>>
-        tangential_row;
+      /// The tangential displacements t . u(x_q) = (global DoF, b_t) . u,
+      /// one per tangent t of the wall: the rows of a frictional force
+      /// (their DoFs join D when a law uses them).
+      std::vector<
+        std::vector<std::pair<dealii::types::global_dof_index, double>>>
+        tangential_rows;
       /// What the point carries from step to step.
       PointHistory history;
     };
@@ -214,7 +227,7 @@ namespace DiskImpact
     /// The law (null: the exact constraint).
     std::shared_ptr<const ContactLaw> law;
     double                            bound;
-    /// A sphere's (ContactState::axisymmetric).
+    /// A sphere's, on its meridian or in 3D (ContactState::axisymmetric).
     bool                                         axisymmetric = false;
     std::vector<dealii::types::global_dof_index> dofs;
     std::vector<Point>                           points;

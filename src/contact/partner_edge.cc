@@ -20,7 +20,7 @@ namespace DiskImpact
 
   std::vector<std::optional<PartnerEdgePoint>>
   locate_on_partner_edge(const ElasticityOperator<2> &op,
-                         const RigidWall             &wall,
+                         const RigidWall<2>          &wall,
                          const std::vector<Point<2>> &points)
   {
     const auto                          &dof_handler = op.get_dof_handler();

@@ -38,6 +38,6 @@ namespace DiskImpact
    */
   std::vector<std::optional<PartnerEdgePoint>>
   locate_on_partner_edge(const ElasticityOperator<2>         &op,
-                         const RigidWall                     &wall,
+                         const RigidWall<2>                  &wall,
                          const std::vector<dealii::Point<2>> &points);
 } // namespace DiskImpact

@@ -106,7 +106,8 @@ namespace DiskImpact
     /// Factorizations of A made for this solver: one.
     unsigned int
     n_factorizations() const;
-    /// Solves with A: one per solve() plus one per column of X.
+    /// Solves with A: one per solve() plus one per column of X (the columns
+    /// added together solved as one block, Factorization::solve()).
     unsigned int
     n_triangular_solves() const;
     /// |C|.

@@ -96,7 +96,10 @@ namespace DiskImpact
       factorization->refactorize(A);
     else
       factorization = std::make_shared<Factorization>(
-        A, communicator, op.get_dof_handler().get_fe().n_components());
+        A,
+        communicator,
+        op.get_dof_handler().get_fe().n_components(),
+        dim == 3);
     solver = std::make_unique<CondensedSolver>(factorization,
                                                op.locally_owned_dofs(),
                                                communicator);

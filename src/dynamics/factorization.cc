@@ -39,15 +39,17 @@ namespace DiskImpact
 
   Factorization::Factorization(const MatrixSum   &A,
                                MPI_Comm           communicator,
-                               const unsigned int block_size)
-      : on_one_rank(Utilities::MPI::n_mpi_processes(communicator) == 1)
+                               const unsigned int block_size,
+                               const bool         mumps_everywhere)
+      : own_cholesky(Utilities::MPI::n_mpi_processes(communicator) == 1 &&
+                     !mumps_everywhere)
   {
     PC pc;
     check_petsc(KSPCreate(communicator, &ksp), "KSPCreate");
     check_petsc(KSPSetType(ksp, KSPPREONLY), "KSPSetType");
     check_petsc(KSPGetPC(ksp, &pc), "KSPGetPC");
     check_petsc(PCSetType(pc, PCCHOLESKY), "PCSetType");
-    if (on_one_rank)
+    if (own_cholesky)
       {
         // On one rank PETSc's own Cholesky of a sequential copy solves 2-3
         // times faster than MUMPS (docs/theory/impact-method.md, "The
@@ -152,7 +154,7 @@ namespace DiskImpact
           MatDestroy(&term.second);
         factorized = blocked->matrix();
       }
-    else if (on_one_rank)
+    else if (own_cholesky)
       {
         check_petsc(MatMPIAIJGetLocalMat(summed(A),
                                          sequential != nullptr ?
@@ -182,5 +184,59 @@ namespace DiskImpact
       }
     else
       check_petsc(KSPSolve(ksp, r, y), "KSPSolve");
+  }
+
+  void
+  Factorization::solve(const std::vector<PETScWrappers::MPI::Vector> &r,
+                       std::vector<PETScWrappers::MPI::Vector>       &y)
+  {
+    AssertDimension(r.size(), y.size());
+    if (own_cholesky || r.size() < 2)
+      {
+        for (unsigned int k = 0; k < r.size(); ++k)
+          solve(r[k], y[k]);
+        return;
+      }
+    // The right-hand sides as the columns of a dense matrix B, X = A^{-1} B
+    // by the factor's MatMatSolve.
+    PC  pc;
+    Mat factor, B, X;
+    check_petsc(KSPGetPC(ksp, &pc), "KSPGetPC");
+    check_petsc(PCFactorGetMatrix(pc, &factor), "PCFactorGetMatrix");
+    const auto local_rows =
+      static_cast<PetscInt>(r.front().locally_owned_size());
+    const auto     n_rows       = static_cast<PetscInt>(r.front().size());
+    const auto     n_columns    = static_cast<PetscInt>(r.size());
+    const MPI_Comm communicator = r.front().get_mpi_communicator();
+    for (Mat *dense : {&B, &X})
+      check_petsc(MatCreateDense(communicator,
+                                 local_rows,
+                                 PETSC_DECIDE,
+                                 n_rows,
+                                 n_columns,
+                                 nullptr,
+                                 dense),
+                  "MatCreateDense");
+    for (PetscInt k = 0; k < n_columns; ++k)
+      {
+        Vec column;
+        check_petsc(MatDenseGetColumnVecWrite(B, k, &column),
+                    "MatDenseGetColumnVecWrite");
+        check_petsc(VecCopy(r[k], column), "VecCopy");
+        check_petsc(MatDenseRestoreColumnVecWrite(B, k, &column),
+                    "MatDenseRestoreColumnVecWrite");
+      }
+    check_petsc(MatMatSolve(factor, B, X), "MatMatSolve");
+    for (PetscInt k = 0; k < n_columns; ++k)
+      {
+        Vec column;
+        check_petsc(MatDenseGetColumnVecRead(X, k, &column),
+                    "MatDenseGetColumnVecRead");
+        check_petsc(VecCopy(column, y[k]), "VecCopy");
+        check_petsc(MatDenseRestoreColumnVecRead(X, k, &column),
+                    "MatDenseRestoreColumnVecRead");
+      }
+    MatDestroy(&B);
+    MatDestroy(&X);
   }
 } // namespace DiskImpact

@@ -83,22 +83,37 @@ namespace DiskImpact
     section = Section<dim>(geometry.is_axisymmetric());
     fe      = std::make_unique<FESystem<dim>>(FE_Q<dim>(fe_degree), dim);
     this->distribute_dofs(triangulation, *fe);
-    // The symmetry condition u_y = 0 on y = 0.
-    std::vector<bool> y_only(dim, false);
-    y_only[1] = true;
-    const ComponentMask y_component(y_only);
-
     constraints.clear();
     constraints.reinit(relevant_dofs);
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    // The symmetry conditions u_y = 0 on y = 0 and, on a quarter sphere,
+    // u_z = 0 on z = 0.
     if (geometry.has_symmetry_boundary())
-      VectorTools::interpolate_boundary_values(*mapping,
-                                               dof_handler,
-                                               BoundaryIds::symmetry,
-                                               Functions::ZeroFunction<dim>(
-                                                 dim),
-                                               constraints,
-                                               y_component);
+      for (unsigned int d = 1; d < dim; ++d)
+        {
+          std::vector<bool> component(dim, false);
+          component[d] = true;
+          VectorTools::interpolate_boundary_values(
+            *mapping,
+            dof_handler,
+            d == 1 ? BoundaryIds::symmetry : BoundaryIds::symmetry_z,
+            Functions::ZeroFunction<dim>(dim),
+            constraints,
+            ComponentMask(component));
+        }
+    // A disk in 3D with held faces: u_z = 0 on z = +-H/2.
+    if (dim == 3 && geometry.faces_held())
+      {
+        std::vector<bool> z_only(dim, false);
+        z_only[dim - 1] = true;
+        VectorTools::interpolate_boundary_values(*mapping,
+                                                 dof_handler,
+                                                 BoundaryIds::flat_faces,
+                                                 Functions::ZeroFunction<dim>(
+                                                   dim),
+                                                 constraints,
+                                                 ComponentMask(z_only));
+      }
     pin_axial_displacement(axial_pins);
     constraints.close();
     massless_dofs      = IndexSet(dof_handler.n_dofs());

@@ -155,13 +155,12 @@ namespace DiskImpact
         {
           // A penalty level has its own mesh level -1: its own operators.
           const int m = mesh_and_time_level(runs[i]).first;
-          std::shared_ptr<ImpactOperators> operators;
+          std::shared_ptr<ImpactOperatorsBase> operators;
           if (m >= 0)
             {
               auto &kept = shared[m];
               if (!kept)
-                kept =
-                  std::make_shared<ImpactOperators>(points[i], MPI_COMM_SELF);
+                kept = make_impact_operators(points[i], MPI_COMM_SELF);
               operators = kept;
             }
           s = run_impact(points[i], MPI_COMM_SELF, false, operators);

@@ -15,7 +15,7 @@
 namespace DiskImpact
 {
   struct Parameters;
-  struct ImpactOperators;
+  struct ImpactOperatorsBase;
   class CsvTable;
 
   /// One run of a convergence study.
@@ -110,7 +110,7 @@ namespace DiskImpact
     /// The operators of this rank's runs by mesh level (a degree level
     /// counts as one): the runs on one mesh differ only in their time step
     /// (refined()), so they share the mesh and the assembled operators.
-    using SharedOperators = std::map<int, std::shared_ptr<ImpactOperators>>;
+    using SharedOperators = std::map<int, std::shared_ptr<ImpactOperatorsBase>>;
 
     /// Run @p points (described by @p runs) on the ranks of
     /// @p communicator, each on the operators of its mesh level in

@@ -19,7 +19,7 @@ namespace DiskImpact
       const auto &partner      = parameters.partner;
       const auto [body, other] = contact_bodies(parameters);
       return Reference::estimate_pair_collision(
-        {parameters.geometry.is_axisymmetric(),
+        {parameters.geometry.is_sphere(),
          parameters.material.density() * parameters.geometry.volume(),
          partner.material().density() *
            parameters.geometry.with_radius(partner.radius()).volume(),
@@ -40,7 +40,7 @@ namespace DiskImpact
       return finite_size_constant(parameters, hertz_contact_radius(parameters));
     return parameters.impact.fixed_law_constant(
       parameters.material.in_plane_poisson_ratio(),
-      parameters.geometry.is_axisymmetric());
+      parameters.geometry.is_sphere());
   }
 
   double
@@ -75,7 +75,7 @@ namespace DiskImpact
   double
   finite_size_constant(const Parameters &body, const double contact_radius)
   {
-    require(body.geometry.is_axisymmetric(),
+    require(body.geometry.is_sphere(),
             "Impact: 'One-DOF law constant = finite size' is the sphere's "
             "law; a disk takes 'exact', 'fit' or a number");
     // D = D0 + D1 ln(a/R) (docs/theory/sphere-finite-size.md).
@@ -98,7 +98,7 @@ namespace DiskImpact
       return estimate_pair_collision(parameters);
     const auto &material = parameters.material;
     return Reference::estimate_wall_collision(
-      {parameters.geometry.is_axisymmetric(),
+      {parameters.geometry.is_sphere(),
        material.density() * parameters.geometry.volume(),
        parameters.impact.velocity(),
        material.velocity_unit(),
@@ -145,7 +145,7 @@ namespace DiskImpact
     const double E2       = material.in_plane_young_modulus();
     const double mass     = material.density() * parameters.geometry.volume();
     const double tau      = material.relaxation_time();
-    if (!parameters.geometry.is_axisymmetric())
+    if (!parameters.geometry.is_sphere())
       // Schwager's alpha = A sqrt(pi E2 / m) with A = tau (Schwager 2007).
       return tau * std::sqrt(M_PI * E2 / mass);
     // Ramírez et al.'s u = (v / g*)^{1/5} with A = tau, eq. 32.
@@ -163,13 +163,13 @@ namespace DiskImpact
   {
     const double R = parameters.geometry.radius();
     return parameters.material.in_plane_young_modulus() * R *
-           (parameters.geometry.is_axisymmetric() ? R : 1.);
+           (parameters.geometry.is_sphere() ? R : 1.);
   }
 
   std::string
   output_units(const Parameters &parameters)
   {
-    return parameters.geometry.is_axisymmetric() ?
+    return parameters.geometry.is_sphere() ?
              "lengths R, times R/c, velocities c = sqrt(E*/rho) with E* = "
              "E/(1-nu^2), forces E* R^2, energies E* R^3 (the whole sphere)" :
              "lengths R, times R/c, velocities c = sqrt(E2/rho), forces E2 "

@@ -21,9 +21,10 @@ namespace DiskImpact
   /// The impact's mesh: the geometry's (with a partner body both bodies'),
   /// graded toward the contact point; throws an InputError if it would
   /// exceed about @p max_cells cells.
+  template <int dim>
   void
   create_impact_mesh(
-    const Parameters         &parameters,
-    dealii::Triangulation<2> &triangulation,
+    const Parameters           &parameters,
+    dealii::Triangulation<dim> &triangulation,
     double max_cells = std::numeric_limits<double>::infinity());
 } // namespace DiskImpact

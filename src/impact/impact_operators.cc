@@ -1,5 +1,6 @@
 #include "impact/impact_operators.h"
 
+#include "body/geometry.h"
 #include "contact/contact_operator.h"
 #include "impact/impact_estimates.h"
 #include "impact/impact_mesh.h"
@@ -12,10 +13,11 @@ namespace DiskImpact
 {
   using namespace dealii;
 
-  ImpactOperators::ImpactOperators(const Parameters &parameters,
-                                   MPI_Comm          communicator)
+  template <int dim>
+  ImpactOperators<dim>::ImpactOperators(const Parameters &parameters,
+                                        MPI_Comm          communicator)
       : triangulation(communicator,
-                      Triangulation<2>::limit_level_difference_at_vertices)
+                      Triangulation<dim>::limit_level_difference_at_vertices)
       , op(parameters.finite_element.degree)
   {
     const auto  &geometry = parameters.geometry;
@@ -42,12 +44,12 @@ namespace DiskImpact
     // with the constraint, on all the candidates' faces (their undeformed
     // gap t^2 / 2R is below the bound).
     if (parameters.contact.exact_constraint())
-      op.set_massless_edge_zone(geometry.contact_point(),
+      op.set_massless_edge_zone(embedded<dim>(geometry.contact_point()),
                                 1.5 * std::max(largest_half_width,
                                                std::sqrt(2. * R *
                                                          candidate_bound)));
     else if (parameters.time_integrator.redistribute_mass())
-      op.set_massless_edge_zone(geometry.contact_point(),
+      op.set_massless_edge_zone(embedded<dim>(geometry.contact_point()),
                                 1.5 * largest_half_width);
     op.assemble(materials(parameters));
     constraint_map = std::make_unique<ConstraintMap>(op.get_constraints(),
@@ -59,10 +61,21 @@ namespace DiskImpact
   }
 
   std::vector<Material>
-  ImpactOperators::materials(const Parameters &parameters)
+  ImpactOperatorsBase::materials(const Parameters &parameters)
   {
     if (parameters.partner.is_body())
       return {parameters.material, parameters.partner.material()};
     return {parameters.material};
   }
+
+  std::shared_ptr<ImpactOperatorsBase>
+  make_impact_operators(const Parameters &parameters, MPI_Comm communicator)
+  {
+    if (parameters.geometry.dimension() == 3)
+      return std::make_shared<ImpactOperators<3>>(parameters, communicator);
+    return std::make_shared<ImpactOperators<2>>(parameters, communicator);
+  }
+
+  template struct ImpactOperators<2>;
+  template struct ImpactOperators<3>;
 } // namespace DiskImpact

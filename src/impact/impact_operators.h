@@ -18,6 +18,21 @@ namespace DiskImpact
 {
   struct Parameters;
 
+  /// ImpactOperators of either dimension, as the runs that share them hold
+  /// them (ImpactSimulation casts to its own dimension's).
+  struct ImpactOperatorsBase
+  {
+    virtual ~ImpactOperatorsBase() = default;
+
+    /// Each body's material, by material id.
+    static std::vector<Material>
+    materials(const Parameters &parameters);
+  };
+
+  /// The operators of @p parameters in the geometry's dimension.
+  std::shared_ptr<ImpactOperatorsBase>
+  make_impact_operators(const Parameters &parameters, MPI_Comm communicator);
+
   /**
    * The part of an impact's set-up that does not depend on the time step:
    * the mesh graded toward the contact, the assembled mass, stiffness (and
@@ -28,17 +43,14 @@ namespace DiskImpact
    * time stepping only reads it, besides the effective matrix and its
    * factorization, which each run's time step makes afresh.
    */
-  struct ImpactOperators
+  template <int dim>
+  struct ImpactOperators : ImpactOperatorsBase
   {
     /// Build and assemble on @p communicator. Collective.
     ImpactOperators(const Parameters &parameters, MPI_Comm communicator);
 
-    /// Each body's material, by material id.
-    static std::vector<Material>
-    materials(const Parameters &parameters);
-
-    dealii::parallel::distributed::Triangulation<2> triangulation;
-    ElasticityOperator<2>                           op;
+    dealii::parallel::distributed::Triangulation<dim> triangulation;
+    ElasticityOperator<dim>                           op;
     /// op's constraints as a matrix, for the time loop.
     std::unique_ptr<ConstraintMap> constraint_map;
     /// The product with op's mass matrix, for the time loop.

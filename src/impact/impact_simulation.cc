@@ -1,5 +1,6 @@
 #include "impact/impact_simulation.h"
 
+#include "base/peak_memory.h"
 #include "base/run_error.h"
 #include "impact/impact_estimates.h"
 #include "output/atomic_file.h"
@@ -102,10 +103,12 @@ namespace DiskImpact
     }
   } // namespace
 
-  ImpactSimulation::ImpactSimulation(const Parameters &parameters,
-                                     MPI_Comm          communicator,
-                                     const bool        write_outputs,
-                                     std::shared_ptr<ImpactOperators> operators)
+  template <int dim>
+  ImpactSimulation<dim>::ImpactSimulation(
+    const Parameters                     &parameters,
+    MPI_Comm                              communicator,
+    const bool                            write_outputs,
+    std::shared_ptr<ImpactOperators<dim>> operators)
       : parameters(parameters)
       , communicator(communicator)
       , with_outputs(write_outputs)
@@ -115,21 +118,23 @@ namespace DiskImpact
       , body_mass(parameters.material.density() * parameters.geometry.volume())
       , domain_factor(1. / parameters.geometry.domain_share())
       , force_unit(DiskImpact::force_unit(parameters))
-      , operators(operators ?
-                    std::move(operators) :
-                    std::make_shared<ImpactOperators>(parameters, communicator))
+      , operators(
+          operators ?
+            std::move(operators) :
+            std::make_shared<ImpactOperators<dim>>(parameters, communicator))
       , op(this->operators->op)
       , constraint_map(*this->operators->constraint_map)
       , series(time_series_table())
   {
     summary.velocity = parameters.impact.velocity();
-    (parameters.geometry.is_axisymmetric() ? summary.ramirez_u :
-                                             summary.schwager_alpha) =
+    (parameters.geometry.is_sphere() ? summary.ramirez_u :
+                                       summary.schwager_alpha) =
       dissipation_parameter(parameters);
   }
 
+  template <int dim>
   ImpactSummary
-  ImpactSimulation::run()
+  ImpactSimulation<dim>::run()
   {
     estimate_collision();
     setup_operators();
@@ -164,8 +169,9 @@ namespace DiskImpact
     return summary;
   }
 
+  template <int dim>
   void
-  ImpactSimulation::estimate_collision()
+  ImpactSimulation<dim>::estimate_collision()
   {
     const auto estimate          = DiskImpact::estimate_collision(parameters);
     contact_time_estimate        = estimate.contact_time;
@@ -177,54 +183,60 @@ namespace DiskImpact
     summary.one_dof_epsilon_unloading = estimate.one_dof_epsilon_unloading;
   }
 
+  template <int dim>
   void
-  ImpactSimulation::setup_operators()
+  ImpactSimulation<dim>::setup_operators()
   {
     const auto &geometry  = parameters.geometry;
     const auto &law       = operators->law;
     const bool  pair      = parameters.partner.is_body();
     summary.massless_dofs = op.n_massless_dofs();
     summary.n_dofs        = op.get_dof_handler().n_dofs();
-    // The modes to project on, of the operator the time stepping uses.
-    if (with_outputs && parameters.impact.n_projected_modes() > 0 && !pair)
-      projection = std::make_unique<ModalProjection>(
-        op,
-        geometry,
-        std::pow(parameters.material.transverse_wave_speed() / radius, 2),
-        parameters.impact.n_projected_modes());
-    zone    = std::make_unique<ContactZone>(op,
-                                         parameters.contact.wall(),
+    // The modes to project on, of the operator the time stepping uses (the
+    // plane models').
+    if constexpr (dim == 2)
+      if (with_outputs && parameters.impact.n_projected_modes() > 0 && !pair)
+        projection = std::make_unique<ModalProjection>(
+          op,
+          geometry,
+          std::pow(parameters.material.transverse_wave_speed() / radius, 2),
+          parameters.impact.n_projected_modes());
+    const RigidWall<dim> wall = parameters.contact.wall<dim>();
+    zone                      = std::make_unique<ContactZone>(op,
+                                         wall,
                                          law,
-                                         geometry.center(),
+                                         embedded<dim>(geometry.center()),
                                          operators->candidate_bound,
-                                         pair);
-    stepper = std::make_unique<ContactStepper<2>>(op,
-                                                  constraint_map,
-                                                  *operators->mass_product,
-                                                  *zone,
-                                                  parameters.time_integrator,
-                                                  !law,
-                                                  operators->factorization,
-                                                  approach_estimate,
-                                                  communicator);
+                                         pair,
+                                         dim == 3 && geometry.is_sphere());
+    stepper                   = std::make_unique<ContactStepper<dim>>(op,
+                                                    constraint_map,
+                                                    *operators->mass_product,
+                                                    *zone,
+                                                    parameters.time_integrator,
+                                                    !law,
+                                                    operators->factorization,
+                                                    approach_estimate,
+                                                    communicator);
     if (pair)
-      bodies = std::make_unique<BodyMotion<2>>(op,
-                                               parameters.contact.wall().normal,
-                                               2);
+      bodies = std::make_unique<BodyMotion<dim>>(op, wall.normal, 2);
   }
 
+  template <int dim>
   void
-  ImpactSimulation::set_initial_state()
+  ImpactSimulation<dim>::set_initial_state()
   {
-    along_normal       = op.create_vector();
-    work               = op.create_vector();
-    product            = op.create_vector();
-    auto        v      = op.create_vector();
-    const auto &normal = parameters.contact.wall().normal;
+    along_normal               = op.create_vector();
+    work                       = op.create_vector();
+    product                    = op.create_vector();
+    auto                v      = op.create_vector();
+    const auto          normal = parameters.contact.wall<dim>().normal;
+    std::vector<double> components(dim);
+    for (unsigned int d = 0; d < dim; ++d)
+      components[d] = normal[d];
     VectorTools::interpolate(op.get_mapping(),
                              op.get_dof_handler(),
-                             Functions::ConstantFunction<2>(
-                               std::vector<double>{normal[0], normal[1]}),
+                             Functions::ConstantFunction<dim>(components),
                              along_normal);
     op.get_constraints().distribute(along_normal);
     if (bodies)
@@ -247,16 +259,18 @@ namespace DiskImpact
     v_com_initial = mean_along_normal(v);
   }
 
+  template <int dim>
   double
-  ImpactSimulation::quadratic_form(
+  ImpactSimulation<dim>::quadratic_form(
     const PETScWrappers::MPI::SparseMatrix &matrix,
     const PETScWrappers::MPI::Vector       &x) const
   {
     return quadratic_form(matrix, x, product);
   }
 
+  template <int dim>
   double
-  ImpactSimulation::quadratic_form(
+  ImpactSimulation<dim>::quadratic_form(
     const PETScWrappers::MPI::SparseMatrix &matrix,
     const PETScWrappers::MPI::Vector       &x,
     PETScWrappers::MPI::Vector             &matrix_x) const
@@ -268,8 +282,10 @@ namespace DiskImpact
     return 0.5 * (work * matrix_x);
   }
 
+  template <int dim>
   double
-  ImpactSimulation::mean_along_normal(const PETScWrappers::MPI::Vector &x) const
+  ImpactSimulation<dim>::mean_along_normal(
+    const PETScWrappers::MPI::Vector &x) const
   {
     // Two bodies: the body's centre of mass relative to the partner's.
     if (bodies)
@@ -277,8 +293,9 @@ namespace DiskImpact
     return (normal_momentum * x) / normal_mass;
   }
 
+  template <int dim>
   double
-  ImpactSimulation::translational_energy(const double v_com) const
+  ImpactSimulation<dim>::translational_energy(const double v_com) const
   {
     if (!bodies)
       return 0.5 * body_mass * v_com * v_com;
@@ -289,8 +306,9 @@ namespace DiskImpact
     return energy;
   }
 
+  template <int dim>
   void
-  ImpactSimulation::advance()
+  ImpactSimulation<dim>::advance()
   {
     const double time = stepper->time();
     const auto   step = stepper->advance(dt);
@@ -309,8 +327,9 @@ namespace DiskImpact
     ++summary.steps;
   }
 
+  template <int dim>
   void
-  ImpactSimulation::record(const double time, const ContactState &step)
+  ImpactSimulation<dim>::record(const double time, const ContactState &step)
   {
     const auto &u = stepper->displacement();
     const auto &v = stepper->velocity();
@@ -359,8 +378,9 @@ namespace DiskImpact
     summary.force_max = std::max(summary.force_max, force);
   }
 
+  template <int dim>
   bool
-  ImpactSimulation::collision_over()
+  ImpactSimulation<dim>::collision_over()
   {
     // The collision ends when the step-mean force returns to zero (Schwager &
     // Pöschel 2007): the last two positive values, at mid-step, extrapolated to
@@ -393,8 +413,9 @@ namespace DiskImpact
     return false;
   }
 
+  template <int dim>
   void
-  ImpactSimulation::snapshot()
+  ImpactSimulation<dim>::snapshot()
   {
     if (!with_outputs)
       return;
@@ -404,37 +425,38 @@ namespace DiskImpact
     // SI run).
     const FieldScales scales = parameters.units.field_scales();
     const double time = stepper->time() * velocity_unit / radius * scales.time;
-    if (parameters.impact.revolved_view() > 0.)
-      {
-        const auto [flat, revolved] =
-          write_deformed_and_revolved_state(op,
-                                            ImpactOperators::materials(
-                                              parameters),
-                                            ghosted_u,
-                                            parameters.geometry.center(),
-                                            radius,
-                                            parameters.impact.revolved_view(),
-                                            directory,
-                                            "impact",
-                                            snapshots.size(),
-                                            scales);
-        snapshots.emplace_back(time, flat);
-        revolved_snapshots.emplace_back(time, revolved);
-      }
-    else
-      snapshots.emplace_back(time,
-                             write_deformed_state(op,
-                                                  ImpactOperators::materials(
-                                                    parameters),
-                                                  ghosted_u,
-                                                  directory,
-                                                  "impact",
-                                                  snapshots.size(),
-                                                  scales));
+    const auto   materials = ImpactOperatorsBase::materials(parameters);
+    if constexpr (dim == 2)
+      if (parameters.impact.revolved_view() > 0.)
+        {
+          const auto [flat, revolved] =
+            write_deformed_and_revolved_state(op,
+                                              materials,
+                                              ghosted_u,
+                                              parameters.geometry.center(),
+                                              radius,
+                                              parameters.impact.revolved_view(),
+                                              directory,
+                                              "impact",
+                                              snapshots.size(),
+                                              scales);
+          snapshots.emplace_back(time, flat);
+          revolved_snapshots.emplace_back(time, revolved);
+          return;
+        }
+    snapshots.emplace_back(time,
+                           write_deformed_state(op,
+                                                materials,
+                                                ghosted_u,
+                                                directory,
+                                                "impact",
+                                                snapshots.size(),
+                                                scales));
   }
 
+  template <int dim>
   void
-  ImpactSimulation::finish()
+  ImpactSimulation<dim>::finish()
   {
     const auto  &u           = stepper->displacement();
     const auto  &v           = stepper->velocity();
@@ -464,10 +486,12 @@ namespace DiskImpact
     summary.time_step             = dt * velocity_unit / radius;
     summary.triangular_solve_time = stepper->triangular_solve_time();
     summary.contact_dofs          = stepper->n_contact_dofs();
+    summary.peak_memory_mb        = peak_memory_mb(communicator);
   }
 
+  template <int dim>
   void
-  ImpactSimulation::finish_pair()
+  ImpactSimulation<dim>::finish_pair()
   {
     // Each body's momentum change against the contact impulse (equal and
     // opposite on the two), relative to the reduced mass's m v_i; and the
@@ -503,8 +527,9 @@ namespace DiskImpact
                              (reduced * impact_speed);
   }
 
+  template <int dim>
   void
-  ImpactSimulation::check_result() const
+  ImpactSimulation<dim>::check_result() const
   {
     // Every value below is the same on all ranks: the error is collective.
     const auto fail = [&](const std::string &check, const std::string &what) {
@@ -551,8 +576,9 @@ namespace DiskImpact
                " (units R/c and R); " + likely_causes);
   }
 
+  template <int dim>
   void
-  ImpactSimulation::write_outputs() const
+  ImpactSimulation<dim>::write_outputs() const
   {
     const std::string &directory = parameters.run.output_directory;
     CsvTable           modes({"rank"});
@@ -585,16 +611,27 @@ namespace DiskImpact
     });
   }
 
+  template class ImpactSimulation<2>;
+  template class ImpactSimulation<3>;
+
   ImpactSummary
-  run_impact(const Parameters                &parameters,
-             MPI_Comm                         communicator,
-             const bool                       write_time_series,
-             std::shared_ptr<ImpactOperators> operators)
+  run_impact(const Parameters                    &parameters,
+             MPI_Comm                             communicator,
+             const bool                           write_time_series,
+             std::shared_ptr<ImpactOperatorsBase> operators)
   {
-    return ImpactSimulation(parameters,
-                            communicator,
-                            write_time_series,
-                            std::move(operators))
+    if (parameters.geometry.dimension() == 3)
+      return ImpactSimulation<3>(parameters,
+                                 communicator,
+                                 write_time_series,
+                                 std::dynamic_pointer_cast<ImpactOperators<3>>(
+                                   operators))
+        .run();
+    return ImpactSimulation<2>(parameters,
+                               communicator,
+                               write_time_series,
+                               std::dynamic_pointer_cast<ImpactOperators<2>>(
+                                 operators))
       .run();
   }
 } // namespace DiskImpact

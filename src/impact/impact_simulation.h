@@ -31,15 +31,16 @@ namespace DiskImpact
    * outputs. Built and run once; its mesh and operators may be shared with
    * runs that differ only in the time step.
    */
+  template <int dim>
   class ImpactSimulation
   {
   public:
     /// With @p operators built for @p parameters (but perhaps another time
     /// step), or null to build them here.
-    ImpactSimulation(const Parameters                &parameters,
-                     MPI_Comm                         communicator,
-                     bool                             write_outputs,
-                     std::shared_ptr<ImpactOperators> operators = {});
+    ImpactSimulation(const Parameters                     &parameters,
+                     MPI_Comm                              communicator,
+                     bool                                  write_outputs,
+                     std::shared_ptr<ImpactOperators<dim>> operators = {});
 
     ImpactSummary
     run();
@@ -119,15 +120,15 @@ namespace DiskImpact
     double        approach_estimate     = 0.; ///< largest approach, 1-DOF
 
     /// The mesh and operators, perhaps shared with other runs.
-    std::shared_ptr<ImpactOperators> operators;
-    ElasticityOperator<2>           &op;
+    std::shared_ptr<ImpactOperators<dim>> operators;
+    ElasticityOperator<dim>              &op;
     /// op's constraints as a matrix, for the time loop.
     const ConstraintMap         &constraint_map;
     std::unique_ptr<ContactZone> zone;
     /// Two bodies (a deformable partner): their centre-of-mass motion.
-    std::unique_ptr<BodyMotion<2>>     bodies;
-    std::unique_ptr<ModalProjection>   projection;
-    std::unique_ptr<ContactStepper<2>> stepper;
+    std::unique_ptr<BodyMotion<dim>>     bodies;
+    std::unique_ptr<ModalProjection>     projection;
+    std::unique_ptr<ContactStepper<dim>> stepper;
 
     /// The centre of mass's motion along the wall normal: the uniform field
     /// n, its momentum functional M n and the mass n . M n.
@@ -155,12 +156,12 @@ namespace DiskImpact
     std::vector<std::pair<double, std::string>> revolved_snapshots;
   };
 
-  /// One impact of @p parameters (ImpactSimulation); with @p operators, on
-  /// those (built for @p parameters but perhaps another time step) instead
-  /// of its own.
+  /// One impact of @p parameters (ImpactSimulation of the geometry's
+  /// dimension); with @p operators, on those (built for @p parameters but
+  /// perhaps another time step) instead of its own.
   ImpactSummary
-  run_impact(const Parameters                &parameters,
-             MPI_Comm                         communicator,
-             bool                             write_time_series = true,
-             std::shared_ptr<ImpactOperators> operators         = {});
+  run_impact(const Parameters                    &parameters,
+             MPI_Comm                             communicator,
+             bool                                 write_time_series = true,
+             std::shared_ptr<ImpactOperatorsBase> operators         = {});
 } // namespace DiskImpact

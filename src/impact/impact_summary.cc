@@ -35,7 +35,8 @@ namespace DiskImpact
                     "partner_vibration_fraction",
                     "momentum_error",
                     "one_dof_epsilon_unloading",
-                    "ramirez_u"});
+                    "ramirez_u",
+                    "peak_memory_mb"});
     table.start_row();
     for (const double value : {s.velocity,
                                s.epsilon,
@@ -61,6 +62,7 @@ namespace DiskImpact
     table.add(s.momentum_error);
     table.add(s.one_dof_epsilon_unloading);
     table.add(s.ramirez_u);
+    table.add(s.peak_memory_mb);
     return table;
   }
 } // namespace DiskImpact

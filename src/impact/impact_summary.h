@@ -42,6 +42,9 @@ namespace DiskImpact
     double vibration_fraction         = std::nan("");
     double partner_vibration_fraction = std::nan("");
     double momentum_error             = std::nan("");
+    /// The largest resident memory of the run's processes, summed over
+    /// the ranks [MB].
+    double peak_memory_mb = 0.;
   };
 
   /// The one-row summary table of @p summary (summary.csv).

@@ -1,6 +1,7 @@
 #include "output/state_output.h"
 
 #include "elasticity/elasticity_operator.h"
+#include "elasticity/solid_stress_postprocessor.h"
 #include "elasticity/stress_postprocessor.h"
 #include "material/material.h"
 #include "output/revolved_view.h"
@@ -9,6 +10,7 @@
 #include <deal.II/numerics/data_out.h>
 
 #include <cmath>
+#include <memory>
 
 namespace DiskImpact
 {
@@ -18,11 +20,12 @@ namespace DiskImpact
   {
     /// DataOut with the field names and kinds public, for RevolvedView,
     /// and its patches scalable to the units of the files.
-    class MeridianOutput : public DataOut<2>
+    template <int dim>
+    class ScaledOutput : public DataOut<dim>
     {
     public:
-      using DataOut<2>::get_dataset_names;
-      using DataOut<2>::get_nonscalar_data_ranges;
+      using DataOut<dim>::get_dataset_names;
+      using DataOut<dim>::get_nonscalar_data_ranges;
 
       /// Displacements and coordinates times scales.length, stresses
       /// times scales.stress.
@@ -41,35 +44,52 @@ namespace DiskImpact
       }
     };
 
+    /// The stress fields of a state: the section's tensor and scalars in
+    /// two dimensions, the solid's in three.
+    template <int dim>
+    std::vector<std::unique_ptr<DataPostprocessor<dim>>>
+    stress_fields(const std::vector<Material> &materials)
+    {
+      std::vector<std::unique_ptr<DataPostprocessor<dim>>> fields;
+      if constexpr (dim == 2)
+        {
+          fields.push_back(std::make_unique<StressPostprocessor>(materials));
+          fields.push_back(
+            std::make_unique<StressScalarsPostprocessor>(materials));
+        }
+      else
+        fields.push_back(std::make_unique<SolidStressPostprocessor>(materials));
+      return fields;
+    }
+
     /// The patches of the displacement and its stresses (the
     /// postprocessors outlive the DataOut that points to them).
+    template <int dim>
     struct StatePatches
     {
-      StatePatches(const ElasticityOperator<2>      &op,
-                   const std::vector<Material>      &material,
+      StatePatches(const ElasticityOperator<dim>    &op,
+                   const std::vector<Material>      &materials,
                    const PETScWrappers::MPI::Vector &ghosted_u,
                    const FieldScales                &scales)
-          : stress(material)
-          , stress_scalars(material)
+          : stresses(stress_fields<dim>(materials))
       {
         data_out.attach_dof_handler(op.get_dof_handler());
         data_out.add_data_vector(
           ghosted_u,
-          std::vector<std::string>(2, "displacement"),
-          DataOut<2>::type_dof_data,
+          std::vector<std::string>(dim, "displacement"),
+          DataOut<dim>::type_dof_data,
           std::vector<DataComponentInterpretation::DataComponentInterpretation>(
-            2, DataComponentInterpretation::component_is_part_of_vector));
-        data_out.add_data_vector(ghosted_u, stress);
-        data_out.add_data_vector(ghosted_u, stress_scalars);
+            dim, DataComponentInterpretation::component_is_part_of_vector));
+        for (const auto &field : stresses)
+          data_out.add_data_vector(ghosted_u, *field);
         data_out.build_patches(op.get_mapping(),
                                op.degree(),
-                               DataOut<2>::curved_inner_cells);
+                               DataOut<dim>::curved_inner_cells);
         data_out.scale(scales);
       }
 
-      const StressPostprocessor        stress;
-      const StressScalarsPostprocessor stress_scalars;
-      MeridianOutput                   data_out;
+      const std::vector<std::unique_ptr<DataPostprocessor<dim>>> stresses;
+      ScaledOutput<dim>                                          data_out;
     };
 
     DataOutBase::VtkFlags
@@ -82,8 +102,9 @@ namespace DiskImpact
     }
   } // namespace
 
+  template <int dim>
   std::string
-  write_deformed_state(const ElasticityOperator<2>      &op,
+  write_deformed_state(const ElasticityOperator<dim>    &op,
                        const std::vector<Material>      &material,
                        const PETScWrappers::MPI::Vector &ghosted_u,
                        const std::string                &directory,
@@ -91,7 +112,7 @@ namespace DiskImpact
                        const unsigned int                index,
                        const FieldScales                &scales)
   {
-    StatePatches state(op, material, ghosted_u, scales);
+    StatePatches<dim> state(op, material, ghosted_u, scales);
     state.data_out.set_flags(vtu_flags());
     return write_vtu_record(state.data_out,
                             directory,
@@ -99,6 +120,23 @@ namespace DiskImpact
                             index,
                             op.get_dof_handler().get_communicator());
   }
+
+  template std::string
+  write_deformed_state(const ElasticityOperator<2> &,
+                       const std::vector<Material> &,
+                       const PETScWrappers::MPI::Vector &,
+                       const std::string &,
+                       const std::string &,
+                       unsigned int,
+                       const FieldScales &);
+  template std::string
+  write_deformed_state(const ElasticityOperator<3> &,
+                       const std::vector<Material> &,
+                       const PETScWrappers::MPI::Vector &,
+                       const std::string &,
+                       const std::string &,
+                       unsigned int,
+                       const FieldScales &);
 
   std::pair<std::string, std::string>
   write_deformed_and_revolved_state(const ElasticityOperator<2>      &op,
@@ -113,7 +151,7 @@ namespace DiskImpact
                                     const FieldScales &scales)
   {
     // One set of patches (the stresses evaluated once) for both files.
-    StatePatches state(op, material, ghosted_u, scales);
+    StatePatches<2> state(op, material, ghosted_u, scales);
     state.data_out.set_flags(vtu_flags());
     const MPI_Comm    communicator = op.get_dof_handler().get_communicator();
     const std::string flat         = write_vtu_record(

@@ -20,15 +20,18 @@ namespace DiskImpact
 
   /**
    * Write a displacement field, its stress tensor and the scalar stress
-   * measures (von Mises, principal stresses, pressure; see
-   * StressScalarsPostprocessor) with deal.II's DataOut on curved patches of
-   * the element degree, as DIRECTORY/BASENAME_NNNN.pvtu with one .vtu per
-   * rank (write_vtu_record()), coordinates and displacements times
+   * measures with deal.II's DataOut on curved patches of the element
+   * degree, as DIRECTORY/BASENAME_NNNN.pvtu with one .vtu per rank
+   * (write_vtu_record()), coordinates and displacements times
    * @p scales.length, stresses times @p scales.stress; returns the .pvtu's
-   * name relative to @p directory.
+   * name relative to @p directory. The plane models write the section's
+   * stress (von Mises, principal stresses, pressure; see
+   * StressScalarsPostprocessor), a 3D body the solid's
+   * (SolidStressPostprocessor).
    */
+  template <int dim>
   std::string
-  write_deformed_state(const ElasticityOperator<2>              &op,
+  write_deformed_state(const ElasticityOperator<dim>            &op,
                        const std::vector<Material>              &materials,
                        const dealii::PETScWrappers::MPI::Vector &ghosted_u,
                        const std::string                        &directory,

@@ -95,4 +95,9 @@ namespace DiskImpact
                 const std::vector<std::string> &,
                 double,
                 const std::function<double(const std::string &)> &);
+  template void
+  scale_patches(std::vector<DataOutBase::Patch<3, 3>> &,
+                const std::vector<std::string> &,
+                double,
+                const std::function<double(const std::string &)> &);
 } // namespace DiskImpact

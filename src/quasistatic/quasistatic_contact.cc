@@ -126,7 +126,7 @@ namespace DiskImpact
       op.assemble(parameters.material);
 
       h_contact             = ContactOperator::smallest_edge_face(op);
-      const RigidWall &wall = parameters.contact.wall();
+      const RigidWall<2> wall = parameters.contact.wall();
       contact               = std::make_unique<ContactOperator>(
         op,
         wall,
@@ -167,7 +167,7 @@ namespace DiskImpact
                           const double       tolerance,
                           const unsigned int max_iterations)
     {
-      const RigidWall &wall = parameters.contact.wall();
+      const RigidWall<2> wall = parameters.contact.wall();
       VectorTools::interpolate(
         op.get_mapping(),
         op.get_dof_handler(),
@@ -251,7 +251,7 @@ namespace DiskImpact
     ContactProblem::results() const
     {
       const auto        &geometry = parameters.geometry;
-      const RigidWall   &wall     = parameters.contact.wall();
+      const RigidWall<2> wall     = parameters.contact.wall();
       const double       R        = geometry.radius();
       const auto         u        = op.create_ghosted(solution);
       const ContactState state    = contact->assemble(u, nullptr, nullptr);

@@ -40,7 +40,7 @@ namespace DiskImpact
     const auto      &geometry = parameters.geometry;
     const auto      &partner  = parameters.partner;
     const bool       sphere   = geometry.is_axisymmetric();
-    const RigidWall &wall     = parameters.contact.wall();
+    const RigidWall<2> wall     = parameters.contact.wall();
     const auto      &n        = wall.normal;
     const auto &[b1, b2]      = pair;
     a_hertz = Reference::two_body_half_width(sphere, total_force, b1, b2);

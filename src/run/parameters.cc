@@ -48,7 +48,7 @@ namespace DiskImpact
       geometry.parse_parameters(prm);
       Material material;
       material.parse_parameters(prm);
-      const bool sphere = geometry.is_axisymmetric();
+      const bool sphere = geometry.is_sphere();
       if (sphere && !material.plane_model_given())
         material.make_axisymmetric();
       const double R = geometry.radius();
@@ -106,9 +106,18 @@ namespace DiskImpact
     geometry.parse_parameters(prm, !task().traits.modal);
     material.parse_parameters(prm);
     require(geometry.dimension() == 2 || task().traits.three_dimensional,
-            "Geometry: 'Dimension = 3' is computed by the task 'modal "
-            "analysis' so far; task '" +
+            "Geometry: 'Dimension = 3' is computed by the tasks 'modal "
+            "analysis', 'impact' and 'impact convergence' so far; task '" +
               run.task + "' takes 'Dimension = 2'");
+    require(geometry.dimension() == 2 || geometry.is_sphere() ||
+              !task().traits.modal,
+            "Geometry: the modes of a disk in 3D are not computed so far "
+            "(a modal analysis in 3D takes 'Body = sphere')");
+    require(geometry.dimension() == 2 || !geometry.has_symmetry_boundary() ||
+              !task().traits.modal,
+            "Geometry: 'Domain = quarter sphere' holds only the modes "
+            "symmetric about its two planes; a modal analysis in 3D takes "
+            "'Domain = full sphere'");
     if (geometry.body() == Body::sphere)
       {
         require(!material.plane_model_given(),
@@ -122,6 +131,13 @@ namespace DiskImpact
     modal_solver.parse_parameters(prm);
     contact.parse_parameters(prm);
     time_integrator.parse_parameters(prm);
+    // The massless edge zone is a disk about the contact point: a disk's
+    // rim in 3D touches along a line.
+    require(geometry.dimension() == 2 || geometry.is_sphere() ||
+              (!contact.exact_constraint() &&
+               !time_integrator.redistribute_mass()),
+            "Contact: 'Law = constraint' and 'Contact mass = redistributed' "
+            "are not available for a disk in 3D so far");
     impact.parse_parameters(prm);
     impact_convergence.parse_parameters(prm);
     // Every task's own subsection is checked; the chosen task's is kept.
@@ -134,8 +150,12 @@ namespace DiskImpact
         }
 
     require(geometry.is_axisymmetric() || impact.revolved_view() == 0.,
-            "Impact: 'Revolved view' is a sphere's 3D view; a disk's "
-            "ParaView output is impact.pvd (set 'Revolved view = 0')");
+            geometry.dimension() == 3 ?
+              "Impact: 'Revolved view' is the meridian's 3D view; a 3D "
+              "body's ParaView output is impact.pvd (set 'Revolved view = "
+              "0')" :
+              "Impact: 'Revolved view' is a sphere's 3D view; a disk's "
+              "ParaView output is impact.pvd (set 'Revolved view = 0')");
     require(geometry.is_axisymmetric() || modal_solver.n_torsional_modes() == 0,
             geometry.dimension() == 3 ?
               "Modal analysis: 'Torsional modes' are the meridian's azimuthal "
@@ -146,7 +166,7 @@ namespace DiskImpact
               "in-plane modes (set 'Torsional modes = 0')");
     // The disk's reduced models (Schwager 2007, Gerl & Zippelius 1999, Schwager
     // & Pöschel 2007) have no sphere version.
-    require(!geometry.is_axisymmetric() || task().traits.sphere,
+    require(!geometry.is_sphere() || task().traits.sphere,
             "Geometry: 'Body = sphere' is not available for the disk's "
             "reduced models (task '" +
               run.task + "')");
@@ -207,15 +227,15 @@ namespace DiskImpact
         bodies.push_back(material.with_poisson_ratio(nu));
     for (const Material &body : bodies)
       {
-        const bool three_d_nu = geometry.is_axisymmetric() ||
+        const bool three_d_nu = geometry.is_sphere() ||
                                 body.plane_model() == PlaneModel::plane_strain;
         const double nu = body.poisson_ratio();
         if (three_d_nu && 2. * nu / (1. - 2. * nu) > max_linear_lambda_over_mu)
           {
             warnings.push_back(
               "Q1 elements ('Degree = 1') lock in a nearly incompressible " +
-              std::string(geometry.is_axisymmetric() ? "sphere" :
-                                                       "plane-strain disk") +
+              std::string(geometry.is_sphere() ? "sphere" :
+                                                 "plane-strain disk") +
               " (nu = " + approximately(nu, 6) +
               "): displacements come out too small and epsilon too large; "
               "use 'Degree = 2' or more (subsection Finite element)");
@@ -235,10 +255,13 @@ namespace DiskImpact
     require(task().traits.partner_body,
             "Partner: 'Kind = body' is computed by the tasks " + tasks +
               " only");
+    require(geometry.dimension() == 2,
+            "Partner: 'Kind = body' takes 'Dimension = 2' (subsection "
+            "Geometry) so far");
     require(!units.is_si(),
             "Partner: 'Kind = body' takes dimensionless units (Units = "
             "dimensionless)");
-    const RigidWall &wall = contact.wall();
+    const RigidWall<2> wall = contact.wall();
     require(wall.point.norm() == 0. && wall.normal[0] == 1. &&
               wall.normal[1] == 0.,
             "Contact: 'Wall point' and 'Wall normal' must keep their "

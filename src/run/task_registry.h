@@ -70,6 +70,11 @@ namespace DiskImpact
                        dealii::Triangulation<2>                  &mesh,
                        const std::function<double(unsigned int)> &cell_budget)>
       build_largest_mesh;
+    /// The same for a three-dimensional body ('Dimension = 3'); optional.
+    std::function<void(const Parameters                          &parameters,
+                       dealii::Triangulation<3>                  &mesh,
+                       const std::function<double(unsigned int)> &cell_budget)>
+      build_largest_solid_mesh;
     /// The files of an earlier run in the output directory to keep, besides
     /// a resumed sweep's table; optional.
     std::function<std::vector<std::string>(const Parameters &parameters)>

@@ -1,3 +1,4 @@
+#include "base/peak_memory.h"
 #include "base/run_error.h"
 #include "impact/impact_convergence_study.h"
 #include "impact/impact_estimates.h"
@@ -69,6 +70,9 @@ namespace DiskImpact
       out << std::fixed << std::setprecision(8)
           << "  epsilon = " << result.epsilon << " +- " << std::scientific
           << std::setprecision(2) << result.error << '\n';
+      const double memory = peak_memory_mb(communicator);
+      out << std::fixed << std::setprecision(0) << "  peak memory " << memory
+          << " MB (all ranks)\n";
       const double target = parameters.impact_convergence.target_error;
       if (target > 0. && result.error > target)
         out << "  (the target error " << target << " is not reached with "
@@ -88,6 +92,7 @@ namespace DiskImpact
       task.traits.impacts = true;
       task.traits.partner_body      = true;
       task.traits.one_mesh_per_rank = true;
+      task.traits.three_dimensional = true;
       task.result_files = {"impact_convergence.csv", "epsilon_estimate.csv"};
       task.run = [](const Parameters &parameters, bool, MPI_Comm communicator) {
         run_impact_convergence(parameters, communicator);
@@ -95,19 +100,20 @@ namespace DiskImpact
       task.check = [](const Parameters &parameters) {
         check_impact_time_step(parameters);
       };
-      task.build_largest_mesh = [](const Parameters &parameters,
-                                   Triangulation<2> &mesh,
-                                   const auto       &cell_budget) {
-        in_context("Impact convergence: the finest of 'Mesh levels'", [&]() {
-          // a degree level's budget is its own degree's
-          const Parameters finest =
-            ImpactConvergenceStudy(parameters.impact_convergence)
-              .finest(parameters);
-          create_impact_mesh(finest,
-                             mesh,
-                             cell_budget(finest.finite_element.degree));
-        });
-      };
+      const auto build =
+        [](const Parameters &parameters, auto &mesh, const auto &cell_budget) {
+          in_context("Impact convergence: the finest of 'Mesh levels'", [&]() {
+            // a degree level's budget is its own degree's
+            const Parameters finest =
+              ImpactConvergenceStudy(parameters.impact_convergence)
+                .finest(parameters);
+            create_impact_mesh(finest,
+                               mesh,
+                               cell_budget(finest.finite_element.degree));
+          });
+        };
+      task.build_largest_mesh       = build;
+      task.build_largest_solid_mesh = build;
       return task;
     }
   } // namespace

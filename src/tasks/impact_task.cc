@@ -30,7 +30,7 @@ namespace DiskImpact
       on_root(communicator, [&]() {
         write_summary(s, parameters.run.output_directory + "/summary.csv");
       });
-      const bool         sphere = parameters.geometry.is_axisymmetric();
+      const bool         sphere = parameters.geometry.is_sphere();
       const std::string  model  = sphere ? "1-DOF Hertz" : "1-DOF log law";
       std::ostringstream out;
       out.precision(8);
@@ -58,7 +58,8 @@ namespace DiskImpact
           << s.wall_time_loop / s.steps / s.triangular_solve_time
           << " solves with the factorized matrix (one: "
           << s.triangular_solve_time * 1e3 << " ms); " << s.contact_dofs
-          << " contact DoFs condensed\n";
+          << " contact DoFs condensed\n"
+          << "  peak memory " << s.peak_memory_mb << " MB (all ranks)\n";
       out << "  energy left in vibration: " << s.vibration_fraction
           << " of E(0)";
       if (parameters.partner.is_body())
@@ -89,28 +90,30 @@ namespace DiskImpact
       task.name        = "impact";
       task.description = "the body hits the wall (or its partner) with speed "
                          "v (impact.csv, summary.csv).";
-      task.traits.impacts      = true;
-      task.traits.partner_body = true;
-      task.result_files        = {"summary.csv",
-                                  "impact.csv",
-                                  "mode_energies.csv",
-                                  "impact.h5",
-                                  "impact.pvd",
-                                  "impact_*.vtu",
-                                  "impact_*.pvtu"};
+      task.traits.impacts           = true;
+      task.traits.partner_body      = true;
+      task.traits.three_dimensional = true;
+      task.result_files             = {"summary.csv",
+                                       "impact.csv",
+                                       "mode_energies.csv",
+                                       "impact.h5",
+                                       "impact.pvd",
+                                       "impact_*.vtu",
+                                       "impact_*.pvtu"};
       task.run = [](const Parameters &parameters, bool, MPI_Comm communicator) {
         run_impact_task(parameters, communicator);
       };
       task.check = [](const Parameters &parameters) {
         check_impact_time_step(parameters);
       };
-      task.build_largest_mesh = [](const Parameters &parameters,
-                                   Triangulation<2> &mesh,
-                                   const auto       &cell_budget) {
-        create_impact_mesh(parameters,
-                           mesh,
-                           cell_budget(parameters.finite_element.degree));
-      };
+      const auto build =
+        [](const Parameters &parameters, auto &mesh, const auto &cell_budget) {
+          create_impact_mesh(parameters,
+                             mesh,
+                             cell_budget(parameters.finite_element.degree));
+        };
+      task.build_largest_mesh       = build;
+      task.build_largest_solid_mesh = build;
       return task;
     }
   } // namespace

@@ -159,7 +159,7 @@ namespace DiskImpact
       const SmoothFit        smooth    = fit_smooth(table, v_ref, fit_terms);
       const DissipationFit   theory    = fit_dissipation(parameters, table);
       const UnitSystem      &units     = parameters.units;
-      const bool             sphere    = parameters.geometry.is_axisymmetric();
+      const bool             sphere    = parameters.geometry.is_sphere();
 
       // The table, dimensionless and in SI.
       std::vector<std::string> names{"velocity",

@@ -50,19 +50,24 @@ namespace DiskImpact
       return std::max(dofs, 0.) / (2. * degree * degree);
     }
 
-    /**
-     * The same for a three-dimensional mesh: 3 k^3 DoFs per cell, and per
-     * DoF the memory of a 3D factorization, whose fill grows faster than a
-     * 2D one's. Measured on task 'modal analysis' of the whole sphere (one
-     * rank, 57 modes): 23 kB per DoF with Q4 (6.8k DoFs), 55 kB with Q5
-     * (13k), 86 kB with Q6 (22k), 40 kB with Q4 on 8 times the cells (52k).
-     */
+    /// Memory per DoF of a three-dimensional run, whose factorization's
+    /// fill grows faster than a 2D one's. Measured on task 'modal analysis'
+    /// of the whole sphere (one rank, 57 modes): 23 kB per DoF with Q4
+    /// (6.8k DoFs), 55 kB with Q5 (13k), 86 kB with Q6 (22k), 40 kB with Q4
+    /// on 8 times the cells (52k); on task 'impact' of the quarter sphere
+    /// (Q2, MUMPS): 19 kB per DoF at 132k DoFs on one rank, 25 kB at 156k
+    /// on two.
+    constexpr double solid_modal_bytes_per_dof  = 90e3;
+    constexpr double solid_impact_bytes_per_dof = 30e3;
+
+    /// The same for a three-dimensional mesh: 3 k^3 DoFs per cell.
     double
-    solid_cell_budget(const unsigned int degree)
+    solid_cell_budget(const unsigned int degree,
+                      const double       bytes,
+                      const unsigned int at_once = 1)
     {
-      constexpr double solid_bytes_per_dof = 90e3;
-      const double     dofs =
-        (0.9 * physical_memory() - fixed_bytes) / solid_bytes_per_dof;
+      const double dofs =
+        (0.9 * physical_memory() / at_once - fixed_bytes) / bytes;
       return std::max(dofs, 0.) / (3. * degree * degree * degree);
     }
 
@@ -88,9 +93,10 @@ namespace DiskImpact
       {
         const unsigned int degree = parameters.finite_element.degree;
         Triangulation<3>   mesh;
-        create_solid_triangulation(parameters.geometry,
-                                   mesh,
-                                   solid_cell_budget(degree));
+        create_solid_triangulation(
+          parameters.geometry,
+          mesh,
+          solid_cell_budget(degree, solid_modal_bytes_per_dof));
         DoFHandler<3> dof_handler(mesh);
         dof_handler.distribute_dofs(FESystem<3>(FE_Q<3>(degree), 3));
         const unsigned int wanted =
@@ -126,6 +132,19 @@ namespace DiskImpact
     void
     check_meshes(const Parameters &parameters, const unsigned int at_once)
     {
+      if (parameters.geometry.dimension() == 3)
+        {
+          Triangulation<3> mesh(
+            Triangulation<3>::limit_level_difference_at_vertices);
+          if (parameters.task().build_largest_solid_mesh)
+            parameters.task().build_largest_solid_mesh(
+              parameters, mesh, [at_once](const unsigned int degree) {
+                return solid_cell_budget(degree,
+                                         solid_impact_bytes_per_dof,
+                                         at_once);
+              });
+          return;
+        }
       Triangulation<2> mesh(
         Triangulation<2>::limit_level_difference_at_vertices);
       if (parameters.task().build_largest_mesh)

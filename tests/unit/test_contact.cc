@@ -184,7 +184,7 @@ TEST_CASE("contact tangent is the derivative of the contact residual",
   ElasticityOperator<2> op(2);
   op.setup(triangulation, geometry, true);
 
-  const RigidWall wall{dealii::Point<2>(0., 0.),
+  const RigidWall<2> wall{dealii::Point<2>(0., 0.),
                        dealii::Tensor<1, 2>({1., 0.})};
   // Both laws; the exponential one smooth, the penalty piecewise linear.
   const auto            law = GENERATE(penalty(1e3), exponential());

@@ -135,7 +135,7 @@ namespace
     std::unique_ptr<InterleavedMass>                mass_product;
     TimeIntegrator                                  integrator;
     std::shared_ptr<const ContactLaw>               law;
-    RigidWall                                       wall;
+    RigidWall<2>                                    wall;
     dealii::Point<2>                                center;
     dealii::PETScWrappers::MPI::Vector              along_normal;
     std::shared_ptr<Factorization>                  factorization;

@@ -338,7 +338,7 @@ end
   const auto own_fine   = run_impact(fine, MPI_COMM_SELF, false);
   REQUIRE(own_fine.steps > own_coarse.steps);
 
-  const auto shared = std::make_shared<ImpactOperators>(coarse, MPI_COMM_SELF);
+  const auto shared = make_impact_operators(coarse, MPI_COMM_SELF);
   for (const auto *run : {&coarse, &fine, &coarse})
     {
       const auto &own       = run == &fine ? own_fine : own_coarse;
