@@ -178,10 +178,16 @@ namespace DiskImpact
           modes[i].radial_fraction =
             radial_fraction(op.create_ghosted(basis.modes[i]));
       }
-    label(modes);
+    // A sphere's modes are labelled against Lamb's; a disk's are not.
+    if (geometry.is_sphere())
+      label(modes);
+    const auto rigid = static_cast<std::size_t>(
+      std::count_if(modes.begin(), modes.end(), [](const auto &mode) {
+        return mode.is_rigid();
+      }));
     // The modes asked for, and the rest of the last one's multiplet; a
     // multiplet cut by the end of the computed modes is left out.
-    std::size_t keep = std::min<std::size_t>(n_rigid + n_elastic, modes.size());
+    std::size_t keep = std::min<std::size_t>(rigid + n_elastic, modes.size());
     while (keep < modes.size() && keep > 0 &&
            modes[keep].omega - modes[keep - 1].omega <
              cluster_tolerance * modes[keep - 1].omega)

@@ -109,15 +109,11 @@ namespace DiskImpact
             "Geometry: 'Dimension = 3' is computed by the tasks 'modal "
             "analysis', 'impact' and 'impact convergence' so far; task '" +
               run.task + "' takes 'Dimension = 2'");
-    require(geometry.dimension() == 2 || geometry.is_sphere() ||
-              !task().traits.modal,
-            "Geometry: the modes of a disk in 3D are not computed so far "
-            "(a modal analysis in 3D takes 'Body = sphere')");
     require(geometry.dimension() == 2 || !geometry.has_symmetry_boundary() ||
               !task().traits.modal,
-            "Geometry: 'Domain = quarter sphere' holds only the modes "
-            "symmetric about its two planes; a modal analysis in 3D takes "
-            "'Domain = full sphere'");
+            "Geometry: a quarter of the body holds only the modes symmetric "
+            "about its two planes; a modal analysis in 3D takes 'Domain = "
+            "full sphere' or 'full disk'");
     if (geometry.body() == Body::sphere)
       {
         require(!material.plane_model_given(),

@@ -137,7 +137,8 @@ namespace DiskImpact
                                   parameters.modal_solver,
                                   communicator,
                                   timer);
-      pcout << "Mesh: the sphere in 3D, " << analysis.n_cells() << " cells, "
+      pcout << "Mesh: " << parameters.geometry.description() << ", "
+            << analysis.n_cells() << " cells, "
             << analysis.n_dofs() << " DoFs (Q"
             << parameters.finite_element.degree << ", mapping of degree "
             << parameters.finite_element.degree << ")" << std::endl;
@@ -167,9 +168,12 @@ namespace DiskImpact
               }
           }
       pcout << modes.size() - n_elastic << " rigid-body modes, " << n_elastic
-            << " elastic modes, " << n_labelled
-            << " labelled; largest relative error against Lamb's "
-            << largest_error << std::endl;
+            << " elastic modes";
+      if (parameters.geometry.is_sphere())
+        pcout << ", " << n_labelled
+              << " labelled; largest relative error against Lamb's "
+              << largest_error;
+      pcout << std::endl;
       timer.print_summary();
     }
 
