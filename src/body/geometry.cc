@@ -106,11 +106,12 @@ namespace DiskImpact
                         Patterns::Integer(2, 3),
                         "2: the disk in a plane model, or the sphere's "
                         "meridian (axisymmetric). 3: the body itself in "
-                        "three dimensions, so far the sphere ('Body = "
-                        "sphere', no 'Mesh file' or 'Contact refinements'; "
-                        "'Domain' full or quarter sphere) for the tasks "
-                        "'modal analysis', 'impact' and 'impact "
-                        "convergence'.");
+                        "three dimensions, for the tasks 'modal analysis', "
+                        "'impact' and 'impact convergence': the sphere "
+                        "('Domain' full or quarter sphere) or the disk of "
+                        "'Thickness' H ('Domain' full or half disk, the "
+                        "half also halved in thickness); the built-in mesh "
+                        "only (no 'Mesh file' or 'Contact refinements').");
       prm.declare_entry("Radius",
                         "1",
                         Patterns::Double(),
@@ -126,7 +127,9 @@ namespace DiskImpact
                         "only modes even about the axis) or 'full disk'. "
                         "Empty: 'full disk' for the tasks 'modal analysis' "
                         "and 'modal convergence', 'half disk' for the "
-                        "others. The sphere in 3D: 'quarter sphere' (y >= 0, "
+                        "others; a disk in 3D's half is also halved in "
+                        "thickness (0 <= z <= H/2, symmetric about z = 0). "
+                        "The sphere in 3D: 'quarter sphere' (y >= 0, "
                         "z >= 0, symmetric about the planes y = 0 and z = 0: "
                         "exact for a head-on impact) or 'full sphere'; "
                         "empty: the full sphere for the modal tasks, the "
