@@ -178,13 +178,11 @@ namespace DiskImpact
     body_radius     = prm.get_double("Radius");
     space_dimension = prm.get_integer("Dimension");
     const std::string domain = prm.get("Domain");
-    // In two dimensions a sphere's meridian ends on the axis; in three the
-    // quarter sphere on its two planes of symmetry.
-    symmetry_boundary     = space_dimension == 2 ?
-                              (body_kind == Body::sphere || domain == "half disk" ||
-                           (domain.empty() && half_disk_by_default)) :
-                              (domain == "quarter sphere" ||
-                           (domain.empty() && half_disk_by_default));
+    // A half disk (in 3D also halved in thickness) and a quarter sphere end
+    // on planes of symmetry; a sphere's meridian always ends on its axis.
+    symmetry_boundary = domain == "half disk" || domain == "quarter sphere" ||
+                        (domain.empty() && half_disk_by_default) ||
+                        (space_dimension == 2 && body_kind == Body::sphere);
     mesh_file             = prm.get("Mesh file");
     n_global_refinements  = prm.get_integer("Global refinements");
     n_contact_refinements = prm.get_integer("Contact refinements");

@@ -141,8 +141,8 @@ namespace DiskImpact
     double
     share(unsigned int i) const;
     /// Point @p i's undeformed coordinate along the wall, from the point of
-    /// the wall nearest the body's centre (in three dimensions its distance
-    /// from that point within the wall's plane).
+    /// the wall nearest the body's centre (for a circular contact its
+    /// distance from that point within the wall's plane).
     double
     coordinate_along_wall(unsigned int i) const;
     /// Point @p i's tangential row along the wall's tangent @p direction

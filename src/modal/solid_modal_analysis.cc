@@ -181,6 +181,9 @@ namespace DiskImpact
     // A sphere's modes are labelled against Lamb's; a disk's are not.
     if (geometry.is_sphere())
       label(modes);
+    else
+      for (auto &mode : modes)
+        mode.labelled = false;
     const auto rigid = static_cast<std::size_t>(
       std::count_if(modes.begin(), modes.end(), [](const auto &mode) {
         return mode.is_rigid();
@@ -259,12 +262,14 @@ namespace DiskImpact
             "    largest rel. error\n";
     for (std::size_t first = 0; first < modes.size();)
       {
-        // One line per multiplet (all rigid modes on one).
+        // One line per multiplet (all rigid modes on one); a mode of
+        // multiplicity 1 (a disk's modes are not clustered) on its own.
         std::size_t end = first + 1;
         while (end < modes.size() &&
                modes[end].is_rigid() == modes[first].is_rigid() &&
                (modes[first].is_rigid() ||
-                (modes[end].label == modes[first].label &&
+                (modes[first].multiplicity > 1 &&
+                 modes[end].label == modes[first].label &&
                  modes[end].multiplicity == modes[first].multiplicity)))
           ++end;
         double largest_error = 0.;
