@@ -33,6 +33,23 @@ namespace DiskImpact
       const Tensor<1, dim> r = x - contact_point;
       return (r - (r * contact_line) * contact_line).norm();
     };
+    // A cell's size: its diameter over sqrt(dim), or, along a contact
+    // line, its diameter in the section across the line (an extruded
+    // cell's size as in 2D, whatever its extent along the line).
+    const bool along_line = contact_line.norm_square() > 0.;
+    const auto size       = [&](const auto &cell) {
+      if (!along_line)
+        return cell->diameter() / std::sqrt(double(dim));
+      double         diameter = 0.;
+      const unsigned last     = cell->n_vertices() - 1;
+      for (unsigned int v = 0; v < cell->n_vertices() / 2; ++v)
+        {
+          const Tensor<1, dim> r = cell->vertex(v) - cell->vertex(last - v);
+          diameter =
+            std::max(diameter, (r - (r * contact_line) * contact_line).norm());
+        }
+      return diameter / std::sqrt(double(dim - 1));
+    };
     const double h_min = a / n_across;
     for (unsigned int step = 0; step < 60; ++step)
       {
@@ -47,7 +64,7 @@ namespace DiskImpact
         for (const auto &cell : triangulation.active_cell_iterators())
           if (cell->is_locally_owned())
             {
-              const double h = cell->diameter() / std::sqrt(double(dim));
+              const double h = size(cell);
               const double d = std::max(0., distance(cell->center()) - h);
               const double target =
                 h_min + grading * std::max(0., d - fine_zone_radius * a);
@@ -128,12 +145,14 @@ namespace DiskImpact
                         "Empty: 'full disk' for the tasks 'modal analysis' "
                         "and 'modal convergence', 'half disk' for the "
                         "others; a disk in 3D's half is also halved in "
-                        "thickness (0 <= z <= H/2, symmetric about z = 0). "
+                        "thickness (0 <= z <= H/2, symmetric about z = 0: "
+                        "its modes are the in-plane ones even about y = 0). "
                         "The sphere in 3D: 'quarter sphere' (y >= 0, "
                         "z >= 0, symmetric about the planes y = 0 and z = 0: "
                         "exact for a head-on impact) or 'full sphere'; "
                         "empty: the full sphere for the modal tasks, the "
-                        "quarter for the others. Must be empty for a "
+                        "quarter for the others (a modal analysis takes "
+                        "the full sphere). Must be empty for a "
                         "sphere in 2D, whose domain is its meridian.");
       prm.declare_entry("Thickness",
                         "1",

@@ -74,7 +74,8 @@ namespace DiskImpact
    * point: with r >= 1 the elements across the whole contact zone of
    * half-width a, not only the smallest, resolve it. With a unit vector
    * @p contact_line d is the distance to the line through the contact
-   * point along it (a disk's rim in 3D). Throws an InputError if the mesh
+   * point along it (a disk's rim in 3D) and a cell's size is measured in
+   * the section across the line, as in 2D. Throws an InputError if the mesh
    * would exceed @p max_cells active cells.
    */
   template <int dim>

@@ -157,20 +157,35 @@ namespace DiskImpact
 
   template <int dim>
   double
-  ContactOperator::smallest_edge_face(const ElasticityOperator<dim> &op)
+  ContactOperator::smallest_edge_face(const ElasticityOperator<dim> &op,
+                                      const bool extruded_along_z)
   {
+    const auto size = [extruded_along_z](const auto &face) {
+      const double measure = face->measure();
+      if (dim == 2)
+        return measure;
+      if (!extruded_along_z)
+        return std::sqrt(measure);
+      double lowest = std::numeric_limits<double>::max(), highest = -lowest;
+      for (const unsigned int v : face->vertex_indices())
+        {
+          lowest  = std::min(lowest, face->vertex(v)[dim - 1]);
+          highest = std::max(highest, face->vertex(v)[dim - 1]);
+        }
+      return measure / (highest - lowest);
+    };
     double smallest = std::numeric_limits<double>::max();
-    for_each_curved_edge_face(
-      op.get_dof_handler(), [&](const auto &cell, const unsigned int f) {
-        const double measure = cell->face(f)->measure();
-        smallest = std::min(smallest, dim == 2 ? measure : std::sqrt(measure));
-      });
+    for_each_curved_edge_face(op.get_dof_handler(),
+                              [&](const auto &cell, const unsigned int f) {
+                                smallest =
+                                  std::min(smallest, size(cell->face(f)));
+                              });
     return Utilities::MPI::min(smallest,
                                op.get_dof_handler().get_communicator());
   }
 
   template double
-  ContactOperator::smallest_edge_face(const ElasticityOperator<2> &);
+  ContactOperator::smallest_edge_face(const ElasticityOperator<2> &, bool);
   template double
-  ContactOperator::smallest_edge_face(const ElasticityOperator<3> &);
+  ContactOperator::smallest_edge_face(const ElasticityOperator<3> &, bool);
 } // namespace DiskImpact

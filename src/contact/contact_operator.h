@@ -69,10 +69,14 @@ namespace DiskImpact
     pressure_profile(const dealii::PETScWrappers::MPI::Vector &ghosted_u) const;
 
     /// The size of the smallest face on the curved edge (over all ranks):
-    /// its length, or in three dimensions the square root of its area.
+    /// its length; in three dimensions the square root of its area, or,
+    /// for a body extruded along z (a disk of finite thickness), its area
+    /// over its extent along z, the length of its edge in the section as
+    /// in 2D.
     template <int dim>
     static double
-    smallest_edge_face(const ElasticityOperator<dim> &op);
+    smallest_edge_face(const ElasticityOperator<dim> &op,
+                       bool                           extruded_along_z = false);
 
   private:
     const ElasticityOperator<2>      &op;

@@ -22,7 +22,9 @@ namespace DiskImpact
                       "Dimensionless penalty factor kappa > 0: the wall's "
                       "penalty stiffness is k = kappa E2 / h_contact [force / "
                       "length^3], with h_contact the length of the smallest "
-                      "edge face at the contact point. The penalty error "
+                      "edge face at the contact point (in 3D: the square "
+                      "root of a sphere's face area; for a disk, the face's "
+                      "edge in the section, as in 2D). The penalty error "
                       "(penetration) is proportional to 1 / kappa.");
   }
 

@@ -29,9 +29,10 @@ namespace DiskImpact
     // Two bodies: the penalty k = kappa E / h with the pair's modulus
     // 1 / E = 1 / E2 + 1 / E2' (the wall's with identical bodies, whose gap
     // is twice the wall's).
-    law = parameters.contact.law({contact_modulus(parameters),
-                                  ContactOperator::smallest_edge_face(op),
-                                  R});
+    law = parameters.contact.law(
+      {contact_modulus(parameters),
+       ContactOperator::smallest_edge_face(op, !geometry.is_sphere()),
+       R});
     // The candidates: edge points whose undeformed gap is below the law's
     // reach plus three times the largest approach the 1-DOF model expects
     // (or the Hertz zone's own gap a^2 / 2R, if larger).

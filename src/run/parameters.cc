@@ -110,10 +110,10 @@ namespace DiskImpact
             "analysis', 'impact' and 'impact convergence' so far; task '" +
               run.task + "' takes 'Dimension = 2'");
     require(geometry.dimension() == 2 || !geometry.has_symmetry_boundary() ||
-              !task().traits.modal,
-            "Geometry: a quarter of the body holds only the modes symmetric "
-            "about its two planes; a modal analysis in 3D takes 'Domain = "
-            "full sphere' or 'full disk'");
+              !task().traits.modal || geometry.body() == Body::disk,
+            "Geometry: a quarter sphere holds only the modes symmetric "
+            "about its two planes, which are not whole multiplets; a modal "
+            "analysis of the sphere in 3D takes 'Domain = full sphere'");
     if (geometry.body() == Body::sphere)
       {
         require(!material.plane_model_given(),
