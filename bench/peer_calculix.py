@@ -114,6 +114,9 @@ DISKIMPACT_SETTINGS = [
 ]
 REFERENCE = {**BASE, "degree": 4, "law": "constraint"}
 REFERENCE_LEVELS = 3
+# diskimpact's lines of subsections Geometry and Material for this body
+DISK_LINES = ("  set Domain             = half disk\n",
+              "  set Plane model   = plane strain\n")
 
 GEO = """R = 1;
 Point(1) = {{R, 0, 0}}; Point(2) = {{0, 0, 0}};
@@ -347,10 +350,13 @@ def reaction_history(dat_path):
     return history
 
 
-def run_calculix(args, work):
-    dt = CONTACT_TIME / args.steps_per_contact
-    end_time = 1.25 * CONTACT_TIME
-    n_dofs, mass = calculix_input(work, args.hmin, args.hmax, dt, end_time)
+def run_calculix(args, work, write_input=calculix_input,
+                 contact_time=CONTACT_TIME):
+    """ccx on the input of write_input(work, hmin, hmax, dt, end_time),
+    which returns (DoFs, mass of the meshed body)."""
+    dt = contact_time / args.steps_per_contact
+    end_time = 1.25 * contact_time
+    n_dofs, mass = write_input(work, args.hmin, args.hmax, dt, end_time)
     start = time.time()
     result = subprocess.run(["ccx", "-i", "impact"], cwd=work,
                             capture_output=True, text=True,
@@ -388,18 +394,19 @@ def run_calculix(args, work):
 
 
 def diskimpact_prm(path, output, setting, task="impact", levels=None):
-    """Writes a diskimpact parameter file for this case."""
+    """Writes a diskimpact parameter file for this case (the body's lines
+    of subsections Geometry and Material: setting["body"], default
+    DISK_LINES)."""
+    geometry, material = setting.get("body", DISK_LINES)
     contact = ("set Law = constraint" if setting["law"] == "constraint" else
                f"set Penalty factor = {setting['kappa']:g}")
     text = f"""set Task             = {task}
 set Output directory = {output}
 subsection Geometry
-  set Domain             = half disk
-  set Global refinements = {setting['refinements']}
+{geometry}  set Global refinements = {setting['refinements']}
 end
 subsection Material
-  set Plane model   = plane strain
-  set Young modulus = 1
+{material}  set Young modulus = 1
   set Poisson ratio = {NU:g}
   set Density       = 1
 end
@@ -447,13 +454,13 @@ def read_csv(path):
         return list(csv.DictReader(f))
 
 
-def run_reference(work):
-    """diskimpact's convergence study with the exact constraint:
+def run_reference(work, setting=REFERENCE, levels=REFERENCE_LEVELS):
+    """diskimpact's convergence study (default: with the exact constraint):
     (epsilon estimate, its bar, epsilon per level, wall time)."""
     prm, output = (os.path.join(work, "reference.prm"),
                    os.path.join(work, "reference"))
-    diskimpact_prm(prm, output, REFERENCE, task="impact convergence",
-                   levels=REFERENCE_LEVELS)
+    diskimpact_prm(prm, output, setting, task="impact convergence",
+                   levels=levels)
     seconds = run_exe(prm)
     total = [row for row in read_csv(os.path.join(
         output, "epsilon_estimate.csv")) if row["factor"] == "total"]
@@ -501,13 +508,17 @@ def run_all(args, work):
     return reference, ccx, own
 
 
-def report_reference(reference):
+def report_reference(reference, study=None):
+    """The reference; study: how it was computed (default: this case's
+    study with the exact constraint)."""
     eps, bar = reference["epsilon"], reference["bar"]
     if reference["seconds"] is None:
         print(f"reference (given): epsilon = {eps:.8f} +- {bar:.2e}")
         return
-    print("reference: diskimpact's convergence study, Law = constraint, "
-          f"Q{REFERENCE['degree']}, {REFERENCE_LEVELS} mesh levels ("
+    if study is None:
+        study = (f"Law = constraint, Q{REFERENCE['degree']}, "
+                 f"{REFERENCE_LEVELS} mesh levels")
+    print(f"reference: diskimpact's convergence study, {study} ("
           + ", ".join(f"{e:.8f} on {n} DoFs"
                       for n, e in reference["levels"]) + ")")
     print(f"reference: epsilon = {eps:.8f} +- {bar:.2e}, "
@@ -515,7 +526,6 @@ def report_reference(reference):
 
 
 def report_runs(args, reference, ccx, own):
-    eps = reference["epsilon"]
     print(f"plane strain, nu = {NU:g}, v = {SPEED:g} c; "
           f"{THREADS['OMP_NUM_THREADS']} thread each")
     print(f"CalculiX: one layer of C3D20, h = {args.hmin:g}..{args.hmax:g} "
@@ -524,6 +534,16 @@ def report_runs(args, reference, ccx, own):
           "R/c")
     for name, setting, _ in own:
         print(f"diskimpact {name}: {describe(setting)}")
+    report_table(reference, ccx, own)
+    if ccx["equations"] is not None and ccx["drift"] is not None:
+        print(f"CalculiX: {ccx['equations']} equations (brick layer), total "
+              f"energy varies by {100 * ccx['drift']:.2f} % of the initial "
+              "kinetic energy")
+
+
+def report_table(reference, ccx, own):
+    """epsilon, error, DoFs, steps and wall time of every run."""
+    eps = reference["epsilon"]
     print(f"{'run':28s} {'epsilon':>10s} {'error':>8s} {'DoFs':>6s} "
           f"{'steps':>5s} {'wall [s]':>8s}")
     rows = [("CalculiX", ccx)] + [("diskimpact " + name, run)
@@ -532,10 +552,6 @@ def report_runs(args, reference, ccx, own):
         print(f"{name:28s} {run['epsilon']:10.8f} "
               f"{abs(run['epsilon'] - eps):8.2e} {run['dofs']:6d} "
               f"{run['steps']:5d} {run['seconds']:8.2f}")
-    if ccx["equations"] is not None and ccx["drift"] is not None:
-        print(f"CalculiX: {ccx['equations']} equations (brick layer), total "
-              f"energy varies by {100 * ccx['drift']:.2f} % of the initial "
-              "kinetic energy")
 
 
 def report_comparison(reference, ccx, own):
