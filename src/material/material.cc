@@ -302,12 +302,15 @@ namespace DiskImpact
   }
 
   void
-  Material::print_summary(ConditionalOStream &out) const
+  Material::print_summary(ConditionalOStream &out, const bool solid) const
   {
     std::ostringstream s;
     s.precision(10);
-    s << "Material: " << plane_model_name() << ", E = " << young
-      << ", nu = " << poisson << ", rho = " << rho
+    s << "Material: "
+      << (solid ?
+            "3D (units and estimates of the " + plane_model_name() + " model)" :
+            plane_model_name())
+      << ", E = " << young << ", nu = " << poisson << ", rho = " << rho
       << ", relaxation time = " << relaxation_tau << ", viscosities: shear "
       << shear_eta << ", bulk " << bulk_eta << '\n'
       << "  in-plane constants: E2 = " << in_plane_young_modulus()

@@ -123,9 +123,11 @@ namespace DiskImpact
     double
     velocity_unit() const;
 
-    /// Print the model, the input and the derived constants.
+    /// Print the model, the input and the derived constants; for a body
+    /// computed in 3D (@p solid), whose stiffness is the 3D one of E and
+    /// nu, the model named is the one that sets the units and estimates.
     void
-    print_summary(dealii::ConditionalOStream &out) const;
+    print_summary(dealii::ConditionalOStream &out, bool solid = false) const;
 
   private:
     PlaneModel model          = PlaneModel::plane_strain;

@@ -62,7 +62,8 @@ namespace DiskImpact
     pcout << "diskimpact: " << Utilities::MPI::n_mpi_processes(communicator)
           << " MPI rank(s), output in " << parameters.run.output_directory
           << "\nGeometry: " << parameters.geometry.description() << '\n';
-    parameters.material.print_summary(pcout);
+    parameters.material.print_summary(pcout,
+                                      parameters.geometry.dimension() == 3);
     parameters.units.print_summary(pcout);
 
     try
