@@ -90,7 +90,14 @@ import time
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import peer_calculix as pc  # noqa: E402
 
-CONTACT_TIME = 7.01 / math.sqrt(pc.E2)   # 7.01 R/c at 0.1 c
+
+
+def contact_time(speed):
+    """The contact time at v/c = speed: 7.01 R/c at 0.1 c in diskimpact's
+    runs, scaled as Hertz's t_c ~ v^(-1/5)."""
+    return 7.01 * (0.1 / speed) ** 0.2 / math.sqrt(pc.E2)
+
+
 DIST_MIN = 0.3                   # element size hmin up to this distance
 DIST_MAX = 1.2                   # from the contact point, hmax from here
 WALL_ELEMENT_FACTOR = 2.         # wall brick side / hmin
@@ -107,9 +114,14 @@ DISKIMPACT_SETTINGS = [
     ("Q2 6 across", {**BASE, "across": 6}),
     ("Q2 6 across, dt/200", {**BASE, "across": 6, "fraction": 0.005}),
 ]
-# the reference: the convergence study from BASE (two mesh levels)
+# the reference: the convergence study from BASE (two mesh levels), or
+# with --reference-model axisymmetric the axisymmetric model's study of
+# params/sweep_sphere.prm (three mesh levels, 6 to 24 elements across)
 REFERENCE = BASE
 REFERENCE_LEVELS = 2
+AXISYMMETRIC = {**BASE, "refinements": 1, "across": 6,
+                "body": ("  set Body               = sphere\n", "")}
+AXISYMMETRIC_LEVELS = 3
 
 # The sphere's quarter wedge about its polar axis z (azimuth 0 ... 90
 # degrees) turned by 120 degrees about (1, 1, 1) (z -> x, x -> y, y -> z):
@@ -298,14 +310,17 @@ def run_all(args, work):
     setting, one after the other; each part's wall time."""
     seconds = {}
     if not args.reference:
-        reference = pc.run_reference(work, REFERENCE, REFERENCE_LEVELS)
+        reference = (pc.run_reference(work, AXISYMMETRIC, AXISYMMETRIC_LEVELS)
+                     if args.reference_model == "axisymmetric" else
+                     pc.run_reference(work, REFERENCE, REFERENCE_LEVELS))
         seconds["reference study"] = reference["seconds"]
     else:
         eps, bar = args.reference
         reference = {"epsilon": eps, "bar": bar, "levels": None,
                      "seconds": None}
     start = time.time()
-    ccx = pc.run_calculix(args, work, calculix_input, CONTACT_TIME)
+    ccx = pc.run_calculix(args, work, calculix_input,
+                          contact_time(args.speed))
     seconds["CalculiX (mesh, input and ccx)"] = time.time() - start
     start = time.time()
     own = [(name, setting, pc.run_diskimpact(work, name, setting))
@@ -315,14 +330,18 @@ def run_all(args, work):
 
 
 def report(args, reference, ccx, own):
-    pc.report_reference(reference, f"Q{REFERENCE['degree']}, penalty "
-                        f"factor {REFERENCE['kappa']:g}, {REFERENCE_LEVELS} "
-                        "mesh levels")
+    model, levels = ((AXISYMMETRIC, AXISYMMETRIC_LEVELS)
+                     if args.reference_model == "axisymmetric" else
+                     (REFERENCE, REFERENCE_LEVELS))
+    pc.report_reference(reference, f"{args.reference_model} model, "
+                        f"Q{model['degree']}, penalty factor "
+                        f"{model['kappa']:g}, {levels} mesh levels")
     print(f"quarter sphere, nu = {pc.NU:g}, v = {pc.SPEED:g} c; "
           f"{pc.THREADS['OMP_NUM_THREADS']} thread each")
     print(f"CalculiX: C3D10, h = {args.hmin:g}..{args.hmax:g} R, "
           f"face-to-face penalty {pc.KAPPA:g} E2 / h, {ccx['steps']} fixed "
-          f"increments of 7.01/{args.steps_per_contact} R/c")
+          f"increments of {contact_time(args.speed) * math.sqrt(pc.E2):.3g}"
+          f"/{args.steps_per_contact} R/c")
     for name, setting, _ in own:
         print(f"diskimpact {name}: {pc.describe(setting)}")
     pc.report_table(reference, ccx, own)
@@ -344,6 +363,13 @@ def main():
             ("--steps-per-contact", {"type": int, "default": 100, "help":
                                      "CalculiX time increments per contact "
                                      "time (default %(default)s)"}),
+            ("--speed", {"type": float, "default": 0.1, "help":
+                         "impact speed v/c (default %(default)s)"}),
+            ("--reference-model", {"choices": ("3d", "axisymmetric"),
+                                   "default": "3d", "help":
+                                   "the reference study: diskimpact in 3D "
+                                   "(two levels) or the axisymmetric model "
+                                   "(three levels; sharper at low speeds)"}),
             ("--reference", {"type": float, "nargs": 2,
                              "metavar": ("EPS", "BAR"), "help":
                              "use this reference epsilon and bar; skips "
@@ -352,6 +378,8 @@ def main():
                         "kept (default: a temporary one, removed)"})):
         parser.add_argument(flag, **options)
     args = parser.parse_args()
+    pc.SPEED = args.speed
+    pc.VELOCITY = args.speed * math.sqrt(pc.E2)
     if not os.path.exists(pc.EXE):
         pc.fail(f"{pc.EXE} not found; build first")
     start = time.time()

@@ -75,7 +75,7 @@ namespace DiskImpact
      * The disk of thickness H in 3D: the plane models' coarse disk (or
      * half disk) extruded along z over H (or H/2 from the mid-plane
      * z = 0 for the quarter) in layers about as thick as its cells are
-     * wide; the rim gets a cylindrical manifold about the disk's axis.
+     * wide.
      */
     void
     create_thick_disk(const BodyGeometry &geometry,
@@ -88,44 +88,53 @@ namespace DiskImpact
       const double height = quarter ? 0.5 * H : H;
       const auto   layers =
         static_cast<unsigned int>(std::max(1., std::round(height / (0.5 * R))));
-      GridGenerator::extrude_triangulation(section,
-                                           layers + 1,
-                                           height,
-                                           triangulation);
-      if (!quarter)
-        GridTools::shift(Tensor<1, 3>({0., 0., -0.5 * H}), triangulation);
-      const double tolerance = 1e-10 * R;
-      const auto   all_at    = [&](const auto &face, const auto &distance) {
-        for (const unsigned int v : face->vertex_indices())
-          if (std::abs(distance(face->vertex(v))) > tolerance)
-            return false;
-        return true;
-      };
-      triangulation.set_all_manifold_ids(numbers::flat_manifold_id);
-      for (const auto &face : triangulation.active_face_iterators())
-        if (face->at_boundary())
-          {
-            if (all_at(face, [&](const Point<3> &x) {
-                  return std::hypot(x[0] - R, x[1]) - R;
-                }))
-              {
-                face->set_boundary_id(BoundaryIds::curved);
-                face->set_all_manifold_ids(curved_manifold_id);
-              }
-            else if (all_at(face, [](const Point<3> &x) { return x[1]; }))
-              face->set_boundary_id(BoundaryIds::symmetry);
-            else if (quarter &&
-                     all_at(face, [](const Point<3> &x) { return x[2]; }))
-              face->set_boundary_id(BoundaryIds::symmetry_z);
-            else
-              face->set_boundary_id(BoundaryIds::flat_faces);
-          }
-      triangulation.set_manifold(curved_manifold_id,
-                                 CylindricalManifold<3>(Tensor<1, 3>(
-                                                          {0., 0., 1.}),
-                                                        Point<3>(R, 0., 0.)));
+      std::vector<double> z;
+      for (unsigned int i = 0; i <= layers; ++i)
+        z.push_back((quarter ? 0. : -0.5 * H) + height * i / layers);
+      extrude_disk(geometry, section, z, triangulation);
     }
   } // namespace
+
+  void
+  extrude_disk(const BodyGeometry        &geometry,
+               const Triangulation<2>    &section,
+               const std::vector<double> &z,
+               Triangulation<3>          &triangulation)
+  {
+    const double R         = geometry.radius();
+    const bool   quarter   = geometry.has_symmetry_boundary();
+    const double tolerance = 1e-10 * R;
+    GridGenerator::extrude_triangulation(section, z, triangulation);
+    const auto all_at = [&](const auto &face, const auto &distance) {
+      for (const unsigned int v : face->vertex_indices())
+        if (std::abs(distance(face->vertex(v))) > tolerance)
+          return false;
+      return true;
+    };
+    triangulation.set_all_manifold_ids(numbers::flat_manifold_id);
+    for (const auto &face : triangulation.active_face_iterators())
+      if (face->at_boundary())
+        {
+          if (all_at(face, [&](const Point<3> &x) {
+                return std::hypot(x[0] - R, x[1]) - R;
+              }))
+            {
+              face->set_boundary_id(BoundaryIds::curved);
+              face->set_all_manifold_ids(curved_manifold_id);
+            }
+          else if (all_at(face, [](const Point<3> &x) { return x[1]; }))
+            face->set_boundary_id(BoundaryIds::symmetry);
+          else if (quarter &&
+                   all_at(face, [](const Point<3> &x) { return x[2]; }))
+            face->set_boundary_id(BoundaryIds::symmetry_z);
+          else
+            face->set_boundary_id(BoundaryIds::flat_faces);
+        }
+    triangulation.set_manifold(curved_manifold_id,
+                               CylindricalManifold<3>(Tensor<1, 3>(
+                                                        {0., 0., 1.}),
+                                                      Point<3>(R, 0., 0.)));
+  }
 
   void
   create_solid_triangulation(const BodyGeometry &geometry,

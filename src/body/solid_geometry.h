@@ -5,6 +5,7 @@
 #include <deal.II/grid/tria.h>
 
 #include <limits>
+#include <vector>
 
 namespace DiskImpact
 {
@@ -32,4 +33,16 @@ namespace DiskImpact
     dealii::Triangulation<3> &triangulation,
     double max_cells = std::numeric_limits<double>::infinity());
 
+  /**
+   * The disk of subsection Geometry in 3D made of @p section (its mesh in
+   * the plane z = 0, with the boundary and manifold ids of
+   * BodyGeometry::create_coarse_triangulation()) extruded through the
+   * planes @p z (increasing; from 0 to H/2 for the quarter, from -H/2 to
+   * H/2 for the whole disk), with the ids of create_solid_triangulation().
+   */
+  void
+  extrude_disk(const BodyGeometry             &geometry,
+               const dealii::Triangulation<2> &section,
+               const std::vector<double>      &z,
+               dealii::Triangulation<3>       &triangulation);
 } // namespace DiskImpact

@@ -53,6 +53,10 @@ namespace DiskImpact
     /// 2^levels (global refinements are the geometry's).
     ImpactParameters
     with_mesh_refined(unsigned int levels) const;
+    /// The mesh one level coarser: half the elements across the contact,
+    /// twice the grading ('Graded mesh = conforming' halves it again).
+    ImpactParameters
+    with_mesh_coarsened() const;
 
     /// 'Elements across contact', 'Grading', 'Fine zone radius' and
     /// 'Graded half-width' (0: Hertz's half-width at the largest force).
@@ -75,6 +79,13 @@ namespace DiskImpact
     graded_half_width() const
     {
       return fixed_half_width;
+    }
+    /// 'Graded mesh = conforming': the graded mesh halved without hanging
+    /// nodes (a disk in 3D: extruded through graded layers).
+    bool
+    conforming_mesh() const
+    {
+      return conforming;
     }
 
     /// Whether 'One-DOF law constant = finite size' (a sphere's derived D).
@@ -127,6 +138,7 @@ namespace DiskImpact
     double              mesh_grading        = 0.3;
     double              fine_zone           = default_fine_zone_radius;
     double              fixed_half_width    = 0.;
+    bool                conforming          = false;
     std::string         law_constant        = "exact";
     double              margin              = 0.2;
     unsigned int        output_interval     = 20;

@@ -135,6 +135,12 @@ namespace DiskImpact
             "Contact: 'Law = constraint' and 'Contact mass = redistributed' "
             "are not available for a disk in 3D so far");
     impact.parse_parameters(prm);
+    require(!impact.conforming_mesh() ||
+              (!partner.is_body() &&
+               !(geometry.dimension() == 3 && geometry.is_sphere())),
+            "Impact: 'Graded mesh = conforming' takes one body against the "
+            "wall, a disk or the sphere's meridian (the sphere in 3D is "
+            "refined with hanging nodes)");
     impact_convergence.parse_parameters(prm);
     // Every task's own subsection is checked; the chosen task's is kept.
     for (const auto &entry : Tasks::all())
