@@ -74,8 +74,13 @@ errors are measured against a reference from diskimpact itself (finer
 mesh and time step); CalculiX's are independent of it.
 
 usage: bench/peer_calculix_3d.py [--hmin H] [--hmax H]
-                                 [--steps-per-contact N]
+                                 [--steps-per-contact N] [--speed V]
+                                 [--reference-model 3d|axisymmetric]
                                  [--reference EPS BAR] [--work DIR]
+
+--speed V runs the same at v = V c (the contact time scaled as Hertz's,
+v^(-1/5)); at low speeds --reference-model axisymmetric takes the sharper
+axisymmetric study as the reference (docs/validation/peer-calculix-3d.md).
        (bench/peer_calculix_3d.sh installs calculix-ccx and gmsh and
        calls this)
 """
