@@ -67,7 +67,7 @@ namespace DiskImpact
       "'Radius' [m], 'Young modulus' [Pa], 'Density' [kg/m^3], 'Relaxation "
       "time' and 'Relaxation times' [s], viscosities [Pa s], 'Wall point' "
       "[m], 'Time step' [s], speeds ('Velocity', 'Velocities', 'Reference "
-      "speed') [m/s]; the run prints SI and dimensionless results.");
+      "speed') [m/s], 'Spin' [rad/s]; the run prints SI and dimensionless results.");
   }
 
   void
@@ -124,6 +124,7 @@ namespace DiskImpact
     divide(prm, "Time stepping", "Time step", own_time);
     divide(prm, "Impact", "Velocity", speed_scale);
     divide(prm, "Impact", "Velocities", speed_scale);
+    divide(prm, "Impact", "Spin", 1. / time_scale);
     divide(prm, "Impact", "Relaxation times", own_time);
     divide(prm, "Restitution law", "Reference speed", speed_scale);
   }

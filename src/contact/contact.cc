@@ -68,6 +68,7 @@ namespace DiskImpact
 
   ContactParameters::ContactParameters(const ContactParameters &other)
       : name(other.name)
+      , friction(other.friction)
       , parsed_law(other.parsed_law->clone())
       , rigid_wall(other.rigid_wall)
   {
@@ -77,6 +78,7 @@ namespace DiskImpact
   ContactParameters::operator=(const ContactParameters &other)
   {
     name       = other.name;
+    friction   = other.friction;
     parsed_law = other.parsed_law->clone();
     rigid_wall = other.rigid_wall;
     return *this;
@@ -112,6 +114,14 @@ namespace DiskImpact
                       Patterns::List(Patterns::Double(), 2, 2),
                       "Normal of the wall pointing toward the disk [-] "
                       "(normalized on input).");
+    prm.declare_entry(
+      "Friction coefficient",
+      "0",
+      Patterns::Double(0.),
+      "Coulomb's friction coefficient mu of the wall [-]: the tangential "
+      "traction of an edge point is at most mu times its pressure; below "
+      "that the point sticks, elastically with the law's stiffness "
+      "(docs/theory/friction.md). 0: frictionless. Needs 'Law = penalty'.");
     prm.leave_subsection();
   }
 
@@ -128,6 +138,7 @@ namespace DiskImpact
         if (law.name == name)
           parsed_law = std::move(parsed);
       }
+    friction = prm.get_double("Friction coefficient");
     rigid_wall.point =
       Point<2>(parse_vector(prm.get("Wall point"), "Wall point"));
     const Tensor<1, 2> normal =
@@ -135,6 +146,11 @@ namespace DiskImpact
     prm.leave_subsection();
     require(normal.norm() > 0., "Contact: 'Wall normal' must not be zero");
     rigid_wall.normal = normal / normal.norm();
+    require(friction == 0. ||
+              (!exact_constraint() && parsed_law->supports_friction()),
+            "Contact: 'Friction coefficient' > 0 needs 'Law = penalty' (the "
+            "law '" +
+              name + "' has no stick stiffness)");
   }
 
   template <int dim>

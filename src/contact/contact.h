@@ -75,6 +75,12 @@ namespace DiskImpact
     /// Whether 'Law = constraint'.
     bool
     exact_constraint() const;
+    /// 'Friction coefficient': Coulomb's mu of the wall (0: frictionless).
+    double
+    friction_coefficient() const
+    {
+      return friction;
+    }
 
     /// The chosen law for the pair's in-plane modulus E2, contact element
     /// size h and radius R (null with the exact constraint).
@@ -101,7 +107,8 @@ namespace DiskImpact
     check_wall(const BodyGeometry &geometry, double max_gap) const;
 
   private:
-    std::string                 name = "penalty";
+    std::string                 name     = "penalty";
+    double                      friction = 0.;
     std::unique_ptr<ContactLaw> parsed_law;
     RigidWall<2>                rigid_wall;
   };

@@ -20,6 +20,18 @@ namespace DiskImpact
   }
 
   double
+  ContactLaw::tangential_stiffness() const
+  {
+    return 0.;
+  }
+
+  bool
+  ContactLaw::supports_friction() const
+  {
+    return false;
+  }
+
+  double
   ContactLaw::reach() const
   {
     return 0.;

@@ -68,6 +68,15 @@ namespace DiskImpact
     /// (0 by default: the law acts from g = 0 on).
     virtual double
     reach() const;
+    /// The stiffness [pressure / length] of the elastic stick that
+    /// regularizes Coulomb friction: the tangential traction changes by
+    /// -k_t times the tangential displacement while a point sticks.
+    virtual double
+    tangential_stiffness() const;
+    /// Whether the law has a tangential_stiffness(), so that 'Friction
+    /// coefficient' > 0 can act with it (false by default).
+    virtual bool
+    supports_friction() const;
 
     /**
      * The pressure averaged over a time step in which the gap goes from

@@ -5,6 +5,7 @@
 #include <deal.II/lac/petsc_sparse_matrix.h>
 #include <deal.II/lac/petsc_vector.h>
 
+#include <array>
 #include <utility>
 #include <vector>
 
@@ -23,8 +24,18 @@ namespace DiskImpact
     double force = 0.;
     /// int p_bar ds: the force averaged over a time step (ContactZone).
     double force_average = 0.;
-    /// int (the law's energy) ds.
+    /// int (the law's energy) ds, with the elastic energy of the stick
+    /// under friction.
     double energy = 0.;
+    /// int tau_bar ds along each of the wall's tangents: the wall's
+    /// tangential force (friction) averaged over a time step.
+    std::array<double, 2> tangential_force_average{};
+    /// The step's mean torque of the wall's forces about the axis e_z
+    /// through the body's centre (friction's and, off the axis, the
+    /// pressure's).
+    double torque_average = 0.;
+    /// The energy friction dissipated in the step (>= 0).
+    double friction_work = 0.;
     /// max(-g): the deepest penetration.
     double max_penetration = 0.;
     /// int p t^2 ds, t the coordinate of the undeformed edge point along the

@@ -31,6 +31,9 @@ namespace DiskImpact
     struct Candidate
     {
       double                                                  ds, gap0, t;
+      double                                                  normal_arm;
+      std::array<double, 2>                                   tangential_arms;
+      std::array<double, 2>                                   from_center;
       dealii::Point<dim>                                      x;
       std::vector<std::pair<types::global_dof_index, double>> row;
       std::vector<std::vector<std::pair<types::global_dof_index, double>>>
@@ -155,12 +158,19 @@ namespace DiskImpact
     const dealii::Point<dim>             origin =
       body_center - wall.gap(body_center) * wall.normal;
     const auto tangents = wall.tangents();
+    wall_normal         = {{wall.normal[0], wall.normal[1]}};
+    wall_tangent        = {{tangents[0][0], tangents[0][1]}};
     // The coordinate along the wall: the distance from the origin within
     // the wall's plane for a circle, else signed along the first tangent.
     const auto along_wall = [&](const dealii::Point<dim> &x) {
       const Tensor<1, dim> in_plane =
         (x - origin) - ((x - origin) * wall.normal) * wall.normal;
       return circular ? in_plane.norm() : in_plane * tangents[0];
+    };
+    // The torque about e_z through the centre of a unit force along f.
+    const auto arm = [&](const dealii::Point<dim> &x, const Tensor<1, dim> &f) {
+      const Tensor<1, dim> r = x - body_center;
+      return r[0] * f[1] - r[1] * f[0];
     };
 
     // This rank's candidates, flattened for the exchange: ds, g0, t, x,
@@ -208,7 +218,14 @@ namespace DiskImpact
                              tangential[d]);
               }
             local.insert(local.end(),
-                         {ds[q], wall.gap(x[q]), along_wall(x[q])});
+                         {ds[q],
+                          wall.gap(x[q]),
+                          along_wall(x[q]),
+                          arm(x[q], wall.normal),
+                          arm(x[q], tangents[0]),
+                          dim == 3 ? arm(x[q], tangents[dim - 2]) : 0.,
+                          x[q][0] - body_center[0],
+                          x[q][1] - body_center[1]});
             for (unsigned int d = 0; d < dim; ++d)
               local.push_back(x[q][d]);
             local.push_back(static_cast<double>(row.size()));
@@ -229,9 +246,16 @@ namespace DiskImpact
          Utilities::MPI::all_gather(dof_handler.get_communicator(), local))
       for (std::size_t k = 0; k < part.size();)
         {
-          Candidate<dim> candidate{
-            part[k], part[k + 1], part[k + 2], {}, {}, {}};
-          k += 3;
+          Candidate<dim> candidate{part[k],
+                                   part[k + 1],
+                                   part[k + 2],
+                                   part[k + 3],
+                                   {{part[k + 4], part[k + 5]}},
+                                   {{part[k + 6], part[k + 7]}},
+                                   {},
+                                   {},
+                                   {}};
+          k += 8;
           for (unsigned int d = 0; d < dim; ++d)
             candidate.x[d] = part[k++];
           candidate.tangential.resize(dim - 1);
@@ -289,9 +313,14 @@ namespace DiskImpact
         Point point{candidate.ds,
                     candidate.gap0,
                     candidate.t,
+                    candidate.normal_arm,
+                    candidate.tangential_arms,
+                    candidate.from_center,
                     {},
                     {},
                     std::move(candidate.tangential),
+                    {},
+                    {},
                     {}};
         for (const auto &[dof, b] : candidate.row)
           point.row.emplace_back(
@@ -320,6 +349,58 @@ namespace DiskImpact
   ContactZone::candidate_dofs() const
   {
     return dofs;
+  }
+
+  void
+  ContactZone::enable_friction(const double mu)
+  {
+    Assert(law && active.empty(), ExcInternalError());
+    friction_coefficient = mu;
+    stick_stiffness      = law->tangential_stiffness();
+    // D grows by the tangential rows' DoFs; the rows follow D's new order.
+    std::set<types::global_dof_index> all_dofs(dofs.begin(), dofs.end());
+    for (const Point &point : points)
+      for (const auto &row : point.tangential_rows)
+        for (const auto &entry : row)
+          all_dofs.insert(entry.first);
+    const std::vector<types::global_dof_index> old_dofs = dofs;
+    dofs.assign(all_dofs.begin(), all_dofs.end());
+    const auto position = [&](const types::global_dof_index dof) {
+      return static_cast<unsigned int>(
+        std::lower_bound(dofs.begin(), dofs.end(), dof) - dofs.begin());
+    };
+    for (Point &point : points)
+      {
+        for (auto &entry : point.row)
+          entry.first = position(old_dofs[entry.first]);
+        point.tangential_rows_in_D.clear();
+        for (const auto &row : point.tangential_rows)
+          {
+            point.tangential_rows_in_D.emplace_back();
+            for (const auto &[dof, b] : row)
+              point.tangential_rows_in_D.back().emplace_back(position(dof), b);
+          }
+      }
+    active_position.assign(dofs.size(), -1);
+  }
+
+  bool
+  ContactZone::has_friction() const
+  {
+    return friction_coefficient > 0.;
+  }
+
+  void
+  ContactZone::enable_rotation()
+  {
+    Assert(law, ExcInternalError());
+    rotation = true;
+  }
+
+  bool
+  ContactZone::tracks_rotation() const
+  {
+    return rotation;
   }
 
   double
@@ -383,6 +464,10 @@ namespace DiskImpact
               for (const auto &entry : point.row)
                 if (active_position[entry.first] < 0)
                   missing.insert(entry.first);
+              for (const auto &row : point.tangential_rows_in_D)
+                for (const auto &entry : row)
+                  if (active_position[entry.first] < 0)
+                    missing.insert(entry.first);
               break;
             }
       }
@@ -398,13 +483,27 @@ namespace DiskImpact
           active_position[i] = active.size();
           active.push_back(i);
         }
+    const auto all_active = [&](const auto &row) {
+      return std::all_of(row.begin(), row.end(), [&](const auto &e) {
+        return active_position[e.first] >= 0;
+      });
+    };
     for (Point &point : points)
-      if (point.active_row.empty() &&
-          std::all_of(point.row.begin(), point.row.end(), [&](const auto &e) {
-            return active_position[e.first] >= 0;
-          }))
-        for (const auto &[i, b] : point.row)
-          point.active_row.emplace_back(active_position[i], b);
+      if (point.active_row.empty() && all_active(point.row) &&
+          std::all_of(point.tangential_rows_in_D.begin(),
+                      point.tangential_rows_in_D.end(),
+                      all_active))
+        {
+          for (const auto &[i, b] : point.row)
+            point.active_row.emplace_back(active_position[i], b);
+          for (const auto &row : point.tangential_rows_in_D)
+            {
+              point.active_tangential_rows.emplace_back();
+              for (const auto &[i, b] : row)
+                point.active_tangential_rows.back().emplace_back(
+                  active_position[i], b);
+            }
+        }
   }
 
   unsigned int
@@ -428,6 +527,68 @@ namespace DiskImpact
     return values;
   }
 
+  ContactZone::StepKinematics
+  ContactZone::kinematics(const Point          &point,
+                          const Vector<double> &u0,
+                          const Vector<double> &u1) const
+  {
+    StepKinematics motion;
+    motion.g0 = motion.g1 = point.gap0;
+    for (const auto &[i, b] : point.active_row)
+      {
+        motion.g0 += b * u0[i];
+        motion.g1 += b * u1[i];
+      }
+    motion.normal_end = motion.normal_force = point.active_row;
+    const unsigned int m = point.active_tangential_rows.size();
+    for (unsigned int d = 0; d < m; ++d)
+      {
+        motion.tangential_end[d] = motion.tangential_force[d] =
+          point.active_tangential_rows[d];
+        for (const auto &[i, b] : point.active_tangential_rows[d])
+          motion.slip_increment[d] += b * (u1[i] - u0[i]);
+      }
+    if (!rotation)
+      return motion;
+    // d = (R(theta) - I - theta e_z x) r and its derivatives by theta, with
+    // r = x - c; the force acts through the mean slope d'((theta0 +
+    // theta1) / 2), exact to O(dtheta^3) for the energy.
+    const unsigned int r_pos  = active.size();
+    const double       theta0 = u0[r_pos], theta1 = u1[r_pos];
+    const auto        &r      = point.from_center;
+    const auto         shift  = [&](const double theta,
+                           const unsigned int     order,
+                           const std::array<double, 2> &direction) {
+      const double c = std::cos(theta), s = std::sin(theta);
+      std::array<double, 2> d;
+      if (order == 0)
+        d = {{r[0] * (c - 1.) - r[1] * (s - theta),
+              r[0] * (s - theta) + r[1] * (c - 1.)}};
+      else if (order == 1)
+        d = {{-r[0] * s - r[1] * (c - 1.), r[0] * (c - 1.) - r[1] * s}};
+      else
+        d = {{-r[0] * c + r[1] * s, -r[0] * s - r[1] * c}};
+      return d[0] * direction[0] + d[1] * direction[1];
+    };
+    const double mid = 0.5 * (theta0 + theta1);
+    motion.g0 += shift(theta0, 0, wall_normal);
+    motion.g1 += shift(theta1, 0, wall_normal);
+    motion.normal_end.emplace_back(r_pos, shift(theta1, 1, wall_normal));
+    motion.normal_force.emplace_back(r_pos, shift(mid, 1, wall_normal));
+    motion.normal_curvature = 0.5 * shift(mid, 2, wall_normal);
+    if (m > 0)
+      {
+        motion.slip_increment[0] +=
+          shift(theta1, 0, wall_tangent) - shift(theta0, 0, wall_tangent);
+        motion.tangential_end[0].emplace_back(r_pos,
+                                              shift(theta1, 1, wall_tangent));
+        motion.tangential_force[0].emplace_back(r_pos,
+                                                shift(mid, 1, wall_tangent));
+        motion.tangential_curvature[0] = 0.5 * shift(mid, 2, wall_tangent);
+      }
+    return motion;
+  }
+
   ContactZone::StepForce
   ContactZone::step_force(const Vector<double> &u0,
                           const Vector<double> &u1,
@@ -435,7 +596,7 @@ namespace DiskImpact
                           const double          new_weight,
                           const bool            with_jacobian) const
   {
-    const unsigned int n = active.size();
+    const unsigned int n = active.size() + (rotation ? 1 : 0);
     StepForce          result;
     result.force.reinit(n);
     if (with_jacobian)
@@ -446,40 +607,202 @@ namespace DiskImpact
       {
         if (point.active_row.empty())
           continue;
-        double g0 = point.gap0, g1 = point.gap0;
-        for (const auto &[i, b] : point.active_row)
-          {
-            g0 += b * u0[i];
-            g1 += b * u1[i];
-          }
-        if (g0 >= 0. && g1 >= 0.)
+        const StepKinematics motion = kinematics(point, u0, u1);
+        const double         g1     = motion.g1;
+        if (motion.g0 >= 0. && g1 >= 0.)
           continue;
-        double p_bar, dp_bar;
-        if (average == ContactAverage::discrete_gradient)
-          {
-            p_bar  = law->discrete_gradient_pressure(g0, g1);
-            dp_bar = law->discrete_gradient_derivative(g0, g1);
-          }
-        else
-          {
-            p_bar = (1. - new_weight) * law->pressure(g0) +
-                    new_weight * law->pressure(g1);
-            dp_bar = new_weight * law->pressure_derivative(g1);
-          }
+        const auto [p_bar, dp_bar] =
+          mean_pressure(motion.g0, g1, average, new_weight);
         const double p1 = law->pressure(g1);
         state.force += p1 * point.ds;
         state.force_average += p_bar * point.ds;
         state.energy += law->energy(g1) * point.ds;
         state.second_moment += p1 * point.t * point.t * point.ds;
         state.max_penetration = std::max(state.max_penetration, -g1);
-        for (const auto &[i, b] : point.active_row)
+        state.torque_average += p_bar * point.normal_arm * point.ds;
+        for (const auto &[i, b] : motion.normal_force)
           result.force[i] += point.ds * p_bar * b;
+        if (rotation)
+          state.torque_average +=
+            point.ds * p_bar * motion.normal_force.back().second;
         if (with_jacobian && dp_bar != 0.)
-          for (const auto &[i, bi] : point.active_row)
-            for (const auto &[j, bj] : point.active_row)
+          for (const auto &[i, bi] : motion.normal_force)
+            for (const auto &[j, bj] : motion.normal_end)
               result.jacobian(i, j) += point.ds * dp_bar * bi * bj;
+        if (with_jacobian && rotation)
+          result.jacobian(n - 1, n - 1) +=
+            point.ds * p_bar * motion.normal_curvature;
+        if (has_friction())
+          add_friction(
+            point, motion, p_bar, dp_bar, new_weight, result, with_jacobian);
       }
     return result;
+  }
+
+  ContactZone::Friction
+  ContactZone::friction(const Point          &point,
+                        const StepKinematics &motion,
+                        const double          p_bar,
+                        const double          dp_bar,
+                        const double          new_weight,
+                        const bool            with_derivative) const
+  {
+    // The step's mean traction tau_bar = (1 - w) tau0 + w tau1 is what
+    // moves the body: it sticks as tau0 - w k_t ds (tau1 = tau0 - k_t ds)
+    // while |tau0 - w k_t ds| <= mu p_bar, the step's mean pressure, and
+    // slips at mu p_bar otherwise (tau1 = tau_bar). A point that leaves the
+    // wall ends the step without traction.
+    Friction              result;
+    const unsigned int    m = point.active_tangential_rows.size();
+    std::array<double, 2> trial{};
+    double                norm = 0.;
+    for (unsigned int d = 0; d < m; ++d)
+      {
+        trial[d] = point.history.traction[d] -
+                   new_weight * stick_stiffness * motion.slip_increment[d];
+        norm += trial[d] * trial[d];
+      }
+    norm               = std::sqrt(norm);
+    const double bound = friction_coefficient * p_bar;
+    result.sticking    = norm <= bound;
+    if (bound <= 0.)
+      return result;
+    std::array<double, 2> direction{};
+    for (unsigned int d = 0; d < m; ++d)
+      {
+        direction[d] = trial[d] / norm;
+        result.mean_traction[d] =
+          result.sticking ? trial[d] : bound * direction[d];
+        result.traction[d] =
+          motion.g1 >= 0. ? 0. :
+          result.sticking ?
+                            point.history.traction[d] -
+                              stick_stiffness * motion.slip_increment[d] :
+                            result.mean_traction[d];
+      }
+    if (!with_derivative)
+      return result;
+    // Sticking: d tau_bar = -w k_t d(slip). Slipping: the bound's part
+    // along the direction e and the direction's part across it.
+    const double scale = result.sticking ? 1. : bound / norm;
+    for (unsigned int d = 0; d < m; ++d)
+      {
+        auto &derivative = result.derivative[d];
+        for (unsigned int e = 0; e < m; ++e)
+          {
+            const double projection =
+              (d == e ? 1. : 0.) -
+              (result.sticking ? 0. : direction[d] * direction[e]);
+            if (projection != 0.)
+              for (const auto &[i, b] : motion.tangential_end[e])
+                derivative.emplace_back(i,
+                                        -scale * projection * new_weight *
+                                          stick_stiffness * b);
+          }
+        if (!result.sticking && dp_bar != 0.)
+          for (const auto &[i, b] : motion.normal_end)
+            derivative.emplace_back(i,
+                                    friction_coefficient * dp_bar *
+                                      direction[d] * b);
+      }
+    return result;
+  }
+
+  void
+  ContactZone::add_friction(const Point          &point,
+                            const StepKinematics &motion,
+                            const double          p_bar,
+                            const double          dp_bar,
+                            const double          new_weight,
+                            StepForce            &result,
+                            const bool            with_jacobian) const
+  {
+    // The work of the mean traction less the change of the stick's elastic
+    // energy |tau|^2 / (2 k_t) is the energy friction dissipates.
+    const Friction f =
+      friction(point, motion, p_bar, dp_bar, new_weight, with_jacobian);
+    const unsigned int m     = point.active_tangential_rows.size();
+    const unsigned int n     = result.force.size();
+    ContactState      &state = result.state;
+    double             work = 0., energy0 = 0., energy1 = 0.;
+    for (unsigned int d = 0; d < m; ++d)
+      {
+        const double tau0    = point.history.traction[d];
+        const double tau_bar = f.mean_traction[d];
+        for (const auto &[i, b] : motion.tangential_force[d])
+          result.force[i] += point.ds * tau_bar * b;
+        if (with_jacobian)
+          {
+            for (const auto &[i, b] : motion.tangential_force[d])
+              for (const auto &[j, value] : f.derivative[d])
+                result.jacobian(i, j) += point.ds * b * value;
+            if (rotation)
+              result.jacobian(n - 1, n - 1) +=
+                point.ds * tau_bar * motion.tangential_curvature[d];
+          }
+        state.tangential_force_average[d] += point.ds * tau_bar;
+        state.torque_average += point.ds * tau_bar * point.tangential_arms[d];
+        if (rotation && d == 0)
+          state.torque_average +=
+            point.ds * tau_bar * motion.tangential_force[d].back().second;
+        work += tau_bar * motion.slip_increment[d];
+        energy0 += tau0 * tau0;
+        energy1 += f.traction[d] * f.traction[d];
+      }
+    energy0 /= 2. * stick_stiffness;
+    energy1 /= 2. * stick_stiffness;
+    state.energy += point.ds * energy1;
+    state.friction_work += point.ds * (-work - (energy1 - energy0));
+  }
+
+  void
+  ContactZone::accept_step(const Vector<double> &u0,
+                           const Vector<double> &u1,
+                           const ContactAverage  average,
+                           const double          new_weight)
+  {
+    if (!has_friction())
+      return;
+    for (Point &point : points)
+      {
+        if (point.active_row.empty())
+          continue;
+        const StepKinematics motion = kinematics(point, u0, u1);
+        if (motion.g0 >= 0. && motion.g1 >= 0.)
+          {
+            point.history = {false, {}, point.history.slip};
+            continue;
+          }
+        const auto [p_bar, dp_bar] =
+          mean_pressure(motion.g0, motion.g1, average, new_weight);
+        const Friction f =
+          friction(point, motion, p_bar, dp_bar, new_weight, false);
+        // The slip: the tangential displacement the stick's spring did not
+        // take up.
+        double slip = 0.;
+        for (unsigned int d = 0; d < point.active_tangential_rows.size(); ++d)
+          slip += std::pow(motion.slip_increment[d] +
+                             (f.traction[d] - point.history.traction[d]) /
+                               stick_stiffness,
+                           2);
+        point.history.slip += std::sqrt(slip);
+        point.history.traction = f.traction;
+        point.history.sticking = f.sticking && motion.g1 < 0.;
+      }
+  }
+
+  std::pair<double, double>
+  ContactZone::mean_pressure(const double         g0,
+                             const double         g1,
+                             const ContactAverage average,
+                             const double         new_weight) const
+  {
+    if (average == ContactAverage::discrete_gradient)
+      return {law->discrete_gradient_pressure(g0, g1),
+              law->discrete_gradient_derivative(g0, g1)};
+    return {(1. - new_weight) * law->pressure(g0) +
+              new_weight * law->pressure(g1),
+            new_weight * law->pressure_derivative(g1)};
   }
 
   unsigned int

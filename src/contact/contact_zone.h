@@ -10,6 +10,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <array>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -20,16 +21,16 @@ namespace DiskImpact
   class ElasticityOperator;
 
   /**
-   * What a contact point carries from one step to the next: the state of a
-   * frictional contact (stick or slip, the tangential force and the slip so
-   * far). No normal law uses it; it is the place for a friction law's
-   * history.
+   * What a contact point carries from one step to the next under Coulomb
+   * friction: whether it sticks, its tangential traction along each of the
+   * wall's tangents at the step's end, and the length it has slipped so
+   * far.
    */
   struct PointHistory
   {
-    bool   sticking         = false;
-    double tangential_force = 0.;
-    double slip             = 0.;
+    bool                  sticking = false;
+    std::array<double, 2> traction{};
+    double                slip = 0.;
   };
 
   /**
@@ -75,6 +76,36 @@ namespace DiskImpact
                 bool                              with_partner = false,
                 bool                              circular     = false);
 
+    /**
+     * Coulomb friction with the coefficient @p mu (> 0) at every point: the
+     * tangential traction tau, at most mu p, sticks elastically with the
+     * law's tangential_stiffness() k_t below that bound and slips at it
+     * (docs/theory/friction.md). The tangential DoFs join D. Call before
+     * the zone is used.
+     */
+    void
+    enable_friction(double mu);
+    /// Whether enable_friction() was called.
+    bool
+    has_friction() const;
+
+    /**
+     * Contact with the body's rigid rotation theta taken exactly (a whole
+     * disk in two dimensions): the linear field theta e_z x (x - c) of the
+     * displacement moves the edge along tangents, the rotation R(theta)
+     * moves it on the circle. The gap and the tangential position of a
+     * point gain n . d and t . d with d = (R(theta) - I - theta e_z x)
+     * (x - c), so the normal force acts through the current lever arm
+     * (docs/theory/friction.md). step_force() and accept_step() then take
+     * vectors on C with theta appended, and the force's last entry is the
+     * generalized force on theta beyond the linear field's torque.
+     */
+    void
+    enable_rotation();
+    /// Whether enable_rotation() was called.
+    bool
+    tracks_rotation() const;
+
     /// D, the candidates' DoFs.
     const std::vector<dealii::types::global_dof_index> &
     candidate_dofs() const;
@@ -113,7 +144,8 @@ namespace DiskImpact
     dealii::Vector<double>
     restrict_to_active(const dealii::Vector<double> &values_on_D) const;
 
-    /// The step's force on C and what it says of the contact.
+    /// The step's force on C (and theta, with tracks_rotation()) and what
+    /// it says of the contact.
     struct StepForce
     {
       dealii::Vector<double>     force;    ///< P
@@ -132,6 +164,15 @@ namespace DiskImpact
                ContactAverage                average,
                double                        new_weight,
                bool                          with_jacobian) const;
+
+    /// Under friction: take the step from @p u0 to @p u1 (values on C),
+    /// whose force step_force() gave with @p average and @p new_weight,
+    /// into each point's history.
+    void
+    accept_step(const dealii::Vector<double> &u0,
+                const dealii::Vector<double> &u1,
+                ContactAverage                average,
+                double                        new_weight);
 
     /// The number of candidate points.
     unsigned int
@@ -200,6 +241,12 @@ namespace DiskImpact
       double ds;   ///< JxW
       double gap0; ///< undeformed gap
       double t;    ///< coordinate along the wall from the contact point
+      /// The torque about e_z through the body's centre of a unit force
+      /// along the wall's normal and along each of its tangents.
+      double                normal_arm;
+      std::array<double, 2> tangential_arms;
+      /// x - c in the plane of rotation (x, y).
+      std::array<double, 2> from_center;
       std::vector<std::pair<unsigned int, double>> row; ///< (position in D, b)
       /// (position in C, b) once all its DoFs are active, else empty.
       std::vector<std::pair<unsigned int, double>> active_row;
@@ -209,6 +256,10 @@ namespace DiskImpact
       std::vector<
         std::vector<std::pair<dealii::types::global_dof_index, double>>>
         tangential_rows;
+      /// Under friction the same rows as (position in D, b), and as
+      /// (position in C, b) once the point is active.
+      std::vector<std::vector<std::pair<unsigned int, double>>>
+        tangential_rows_in_D, active_tangential_rows;
       /// What the point carries from step to step.
       PointHistory history;
     };
@@ -216,6 +267,65 @@ namespace DiskImpact
     /// g of @p point for the values @p u on D.
     static double
     gap(const Point &point, const dealii::Vector<double> &u);
+
+    using Row = std::vector<std::pair<unsigned int, double>>;
+    /// A point's motion in a step from u0 to u1 (values on C, theta
+    /// appended with tracks_rotation()).
+    struct StepKinematics
+    {
+      double                g0 = 0., g1 = 0.;
+      std::array<double, 2> slip_increment{};
+      /// d g1 / d u1 and the row the pressure's force acts through (the
+      /// two differ in theta's entry: its derivative at theta1 and the
+      /// mean slope over the step), per tangent the same for the slip.
+      Row               normal_end, normal_force;
+      std::array<Row, 2> tangential_end, tangential_force;
+      /// d (the force row's theta entry) / d theta1.
+      double                normal_curvature = 0.;
+      std::array<double, 2> tangential_curvature{};
+    };
+    StepKinematics
+    kinematics(const Point                  &point,
+               const dealii::Vector<double> &u0,
+               const dealii::Vector<double> &u1) const;
+    /// The step's mean pressure p_bar and its derivative by g1.
+    std::pair<double, double>
+    mean_pressure(double         g0,
+                  double         g1,
+                  ContactAverage average,
+                  double         new_weight) const;
+
+    /// A point's friction in a step: its mean traction, the traction at
+    /// the step's end, how the mean depends on the end state, and whether
+    /// it sticks.
+    struct Friction
+    {
+      std::array<double, 2> mean_traction{};
+      std::array<double, 2> traction{};
+      bool                  sticking = false;
+      /// d mean_traction[d] / d u1 as (position, value) pairs.
+      std::array<Row, 2> derivative;
+    };
+    /// The return mapping of @p point from its history for the step
+    /// @p motion with the mean pressure @p p_bar and its derivative
+    /// @p dp_bar.
+    Friction
+    friction(const Point          &point,
+             const StepKinematics &motion,
+             double                p_bar,
+             double                dp_bar,
+             double                new_weight,
+             bool                  with_derivative) const;
+    /// Add @p point's friction force of the step to @p result, with its
+    /// Jacobian.
+    void
+    add_friction(const Point          &point,
+                 const StepKinematics &motion,
+                 double                p_bar,
+                 double                dp_bar,
+                 double                new_weight,
+                 StepForce            &result,
+                 bool                  with_jacobian) const;
     /// The law's reach (0 for the exact constraint).
     double
     reach() const;
@@ -226,6 +336,12 @@ namespace DiskImpact
 
     /// The law (null: the exact constraint).
     std::shared_ptr<const ContactLaw> law;
+    /// Coulomb's mu (0: no friction) and the stick stiffness k_t.
+    double friction_coefficient = 0., stick_stiffness = 0.;
+    /// enable_rotation(), and the wall's normal and first tangent in the
+    /// plane of rotation.
+    bool                  rotation = false;
+    std::array<double, 2> wall_normal{}, wall_tangent{};
     double                            bound;
     /// A sphere's, on its meridian or in 3D (ContactState::axisymmetric).
     bool                                         axisymmetric = false;

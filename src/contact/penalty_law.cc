@@ -74,6 +74,18 @@ namespace DiskImpact
   }
 
   double
+  PenaltyLaw::tangential_stiffness() const
+  {
+    return k;
+  }
+
+  bool
+  PenaltyLaw::supports_friction() const
+  {
+    return true;
+  }
+
+  double
   PenaltyLaw::penalty_factor() const
   {
     return kappa;

@@ -32,6 +32,11 @@ namespace DiskImpact
     pressure_derivative(double gap) const override;
     double
     energy(double gap) const override;
+    /// k: the stick is as stiff as the wall.
+    double
+    tangential_stiffness() const override;
+    bool
+    supports_friction() const override;
 
     double
     penalty_factor() const;

@@ -195,7 +195,28 @@ namespace DiskImpact
                                    const double          tolerance,
                                    const unsigned int    max_iterations,
                                    Vector<double>       &u_C,
-                                   unsigned int         &iterations) const
+                                   unsigned int         &iterations,
+                                   const bool euclidean_fallback) const
+  {
+    return solve_condensed(s_matrix,
+                           y_C,
+                           force,
+                           tolerance,
+                           max_iterations,
+                           u_C,
+                           iterations,
+                           euclidean_fallback);
+  }
+
+  bool
+  CondensedSolver::solve_condensed(const FullMatrix<double> &s_matrix,
+                                   const Vector<double>     &y_C,
+                                   const Force              &force,
+                                   const double              tolerance,
+                                   const unsigned int        max_iterations,
+                                   Vector<double>           &u_C,
+                                   unsigned int             &iterations,
+                                   const bool                euclidean_fallback)
   {
     const unsigned int n = y_C.size();
     // h(u) = u - y_C - S P(u) and |h|, with the Jacobian I - S dP/du.
@@ -227,6 +248,7 @@ namespace DiskImpact
         system.compute_lu_factorization();
         Vector<double> step(h);
         system.solve(step);
+        const double norm2 = h.l2_norm();
         // Backtracking: the penalty's kinks can make a full step overshoot.
         double         length = 1.;
         Vector<double> trial(n);
@@ -241,8 +263,22 @@ namespace DiskImpact
         // rounding floor, which the stiff Jacobian I - S dP/du raises above
         // eps |u_C|. Converged if u_C's error, which the Newton step
         // estimates, is within the tolerance; otherwise a failure.
-        if (!decreased)
+        if (!decreased &&
+            (step.linfty_norm() <= tolerance || !euclidean_fallback))
           return step.linfty_norm() <= tolerance;
+        // Under friction the return mapping's kinks can leave the largest
+        // component without a decrease along the Newton direction: then
+        // the Euclidean norm decides.
+        length = 1.;
+        for (unsigned int cut = 0; cut < 30 && !decreased; ++cut, length *= 0.5)
+          {
+            trial = u_C;
+            trial.add(-length, step);
+            residual(trial, false);
+            decreased = h.l2_norm() < norm2;
+          }
+        if (!decreased)
+          return false;
         u_C  = trial;
         norm = residual(u_C, true);
       }

@@ -92,7 +92,9 @@ namespace DiskImpact
      * backtracking line search on |u_C - y_C - S P(u_C)|; true if that
      * falls below @p tolerance (in max norm) within @p max_iterations, or
      * if it stops decreasing (its rounding floor) with a Newton step below
-     * @p tolerance.
+     * @p tolerance. With @p euclidean_fallback (friction, whose kinks can
+     * leave the largest component without a decrease) a step the max norm
+     * refuses is tried on the Euclidean norm before giving up.
      * Identical on every rank (no communication).
      */
     bool
@@ -101,7 +103,19 @@ namespace DiskImpact
                     double                        tolerance,
                     unsigned int                  max_iterations,
                     dealii::Vector<double>       &u_C,
-                    unsigned int                 &iterations) const;
+                    unsigned int                 &iterations,
+                    bool euclidean_fallback = false) const;
+    /// The same Newton's method on the system u = y + @p S P(u) of any
+    /// size (C with unknowns of the contact's own appended).
+    static bool
+    solve_condensed(const dealii::FullMatrix<double> &S,
+                    const dealii::Vector<double>     &y,
+                    const Force                      &force,
+                    double                            tolerance,
+                    unsigned int                      max_iterations,
+                    dealii::Vector<double>           &u,
+                    unsigned int                     &iterations,
+                    bool                              euclidean_fallback);
 
     /// Factorizations of A made for this solver: one.
     unsigned int

@@ -62,6 +62,32 @@ namespace DiskImpact
 
   template <int dim>
   void
+  ContactStepper<dim>::track_rotation(
+    const PETScWrappers::MPI::Vector &field,
+    const PETScWrappers::MPI::Vector &momentum)
+  {
+    rotation_field    = field;
+    rotation_momentum = momentum;
+    inertia           = momentum * field;
+  }
+
+  template <int dim>
+  Vector<double>
+  ContactStepper<dim>::on_contact(const Vector<double> &values_on_D,
+                                  const double          angle) const
+  {
+    Vector<double> values = zone.restrict_to_active(values_on_D);
+    if (!zone.tracks_rotation())
+      return values;
+    Vector<double> with_angle(values.size() + 1);
+    for (unsigned int i = 0; i < values.size(); ++i)
+      with_angle[i] = values[i];
+    with_angle[values.size()] = angle;
+    return with_angle;
+  }
+
+  template <int dim>
+  void
   ContactStepper<dim>::start(const PETScWrappers::MPI::Vector &velocity,
                              const double                      step)
   {
@@ -125,6 +151,14 @@ namespace DiskImpact
         factorize(0.5 * dt);
       }
     complete_step();
+    // Friction: each point's traction and slip at the step's end.
+    if (zone.has_friction())
+      zone.accept_step(on_contact(u_D, theta),
+                       on_contact(u1_D_new, theta_new),
+                       integrator.contact_average(),
+                       integrator.contact_new_weight());
+    if (zone.tracks_rotation())
+      theta = (rotation_momentum * u_new) / inertia;
     if (op.has_damping())
       {
         integrator.damping_velocity<PETScWrappers::MPI::Vector>(v, v_new, work);
@@ -248,8 +282,21 @@ namespace DiskImpact
   bool
   ContactStepper<dim>::attempt_penalty_step(const Vector<double> &y_D)
   {
+    // With the rotation tracked, theta is one more unknown: theta1 =
+    // theta_y + (w_C . P + Q) / (c_M I), and Q moves u by Q w / (c_M I).
+    const bool turning = zone.tracks_rotation();
+    double     theta_y = 0., scale = 0.;
+    if (turning)
+      {
+        if (rotation_on_D.size() == 0)
+          rotation_on_D = solver->observe(rotation_field);
+        theta_y = (rotation_momentum * u_new) / inertia;
+        scale   = 1. / (integrator.mass_coefficient(dt) * inertia);
+      }
     Vector<double> u1_D = y_D;
     Vector<double> P;
+    double         Q = 0.;
+    theta_new        = theta_y;
     for (;;)
       {
         // Points that touch at the start, the contact-free end or the end
@@ -259,8 +306,9 @@ namespace DiskImpact
         solver->add_dofs(missing);
         if (zone.n_active_dofs() == 0)
           break;
-        const Vector<double> u0_C = zone.restrict_to_active(u_D);
-        const Vector<double> y_C  = zone.restrict_to_active(y_D);
+        const unsigned int   n    = zone.n_active_dofs();
+        const Vector<double> u0_C = on_contact(u_D, theta);
+        const Vector<double> y_C  = on_contact(y_D, theta_y);
         Vector<double>       u1_C = y_C;
         unsigned int         iterations;
         const auto           force = [&](const Vector<double> &u_C) {
@@ -271,28 +319,69 @@ namespace DiskImpact
                                    true);
           return std::make_pair(f.force, f.jacobian);
         };
-        if (!solver->solve_condensed(y_C,
-                                     force,
-                                     integrator.newton_tolerance() * gap_scale,
-                                     integrator.max_newton_iterations(),
-                                     u1_C,
-                                     iterations))
+        Vector<double>     w_C;
+        FullMatrix<double> S;
+        if (turning)
+          {
+            w_C = zone.restrict_to_active(rotation_on_D);
+            // S on C bordered by theta's row and column.
+            S.reinit(n + 1, n + 1);
+            S.fill(solver->condensed_matrix());
+            for (unsigned int i = 0; i < n; ++i)
+              S(i, n) = S(n, i) = scale * w_C[i];
+            S(n, n) = scale;
+          }
+        // Friction's stick-slip kinks shorten Newton's steps: ten times the
+        // iterations.
+        const unsigned int max_iterations =
+          integrator.max_newton_iterations() * (zone.has_friction() ? 10 : 1);
+        const bool converged =
+          turning ?
+            CondensedSolver::solve_condensed(
+              S,
+              y_C,
+              force,
+              integrator.newton_tolerance() * gap_scale,
+              max_iterations,
+              u1_C,
+              iterations,
+              true) :
+            solver->solve_condensed(y_C,
+                                    force,
+                                    integrator.newton_tolerance() * gap_scale,
+                                    max_iterations,
+                                    u1_C,
+                                    iterations,
+                                    zone.has_friction());
+        if (!converged)
           return false;
         newton_iterations += iterations;
-        P    = force(u1_C).first;
+        P = force(u1_C).first;
+        if (turning)
+          {
+            Q = P[n];
+            Vector<double> on_C(n);
+            for (unsigned int i = 0; i < n; ++i)
+              on_C[i] = P[i];
+            P.swap(on_C);
+            theta_new = theta_y + scale * (w_C * P + Q);
+          }
         u1_D = y_D;
         u1_D += solver->observed_response(P);
+        if (turning)
+          u1_D.add(scale * Q, rotation_on_D);
         if (zone.dofs_to_activate({&u1_D}).empty())
           break;
       }
     if (P.size() > 0)
       solver->add_columns(P, u_new);
+    if (Q != 0.)
+      u_new.add(scale * Q, rotation_field);
     constraint_map.distribute(u_new);
-    contact_force             = P;
-    const Vector<double> u0_C = zone.restrict_to_active(u_D);
-    state                     = zone
-              .step_force(u0_C,
-                          zone.restrict_to_active(u1_D),
+    contact_force = P;
+    state         = zone
+              .step_force(on_contact(u_D, theta),
+                          on_contact(u1_D, theta_new),
                           integrator.contact_average(),
                           integrator.contact_new_weight(),
                           false)
@@ -387,7 +476,7 @@ namespace DiskImpact
   void
   ContactStepper<dim>::update_stiffness_image()
   {
-    if (op.has_damping() || exact_constraint)
+    if (op.has_damping() || exact_constraint || zone.tracks_rotation())
       {
         // K u_new with u_new's constrained entries zeroed.
         constraint_map.zeroed(u_new, work);

@@ -77,6 +77,18 @@ namespace DiskImpact
                    double                          gap_scale,
                    MPI_Comm                        communicator);
 
+    /**
+     * Track the body's rigid rotation theta = m . u / (m . w) for the zone
+     * (ContactZone::enable_rotation()): @p rotation_field w = e_z x (x - c),
+     * @p rotation_momentum m = M w. The contact's generalized force Q on
+     * theta acts as the body force Q M w / (m . w), whose response to the
+     * effective matrix is Q w / (c_M m . w) (K w = 0): one more unknown in
+     * the condensed solve, no more solves. Call before start().
+     */
+    void
+    track_rotation(const dealii::PETScWrappers::MPI::Vector &rotation_field,
+                   const dealii::PETScWrappers::MPI::Vector &rotation_momentum);
+
     /// Start from rest (u = a = 0) with the velocity @p velocity (its
     /// constraints satisfied) and factorize for the step @p dt.
     void
@@ -195,6 +207,15 @@ namespace DiskImpact
     StateVector mass_u, mass_v, mass_a, mass_u_new, mass_v_new, mass_a_new;
     /// u on the contact candidates' DoFs, at the step's start and end.
     dealii::Vector<double> u_D, u1_D_new;
+    /// track_rotation(): w, M w, w on D, the moment of inertia m . w, the
+    /// rotation theta at the step's start and end.
+    dealii::PETScWrappers::MPI::Vector rotation_field, rotation_momentum;
+    dealii::Vector<double>             rotation_on_D;
+    double inertia = 0., theta = 0., theta_new = 0.;
+    /// The values on C of @p values_on_D, with @p angle appended when the
+    /// rotation is tracked.
+    dealii::Vector<double>
+    on_contact(const dealii::Vector<double> &values_on_D, double angle) const;
     /// Law 'constraint': the point forces at the step's start and end.
     dealii::Vector<double> point_forces, point_forces_new;
     /// With the energy-conserving scheme and the exact constraint: the

@@ -53,7 +53,9 @@ namespace DiskImpact
     prm.declare_entry("Maximum Newton iterations",
                       "30",
                       Patterns::Integer(1, 1000),
-                      "Newton iterations per step before the step is cut.");
+                      "Newton iterations per step before the step is cut "
+                      "(ten times as many under friction, whose stick-slip "
+                      "kinks shorten Newton's steps).");
     prm.declare_entry("Energy tolerance",
                       "1e-6",
                       Patterns::Double(0.),

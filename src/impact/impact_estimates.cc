@@ -23,7 +23,7 @@ namespace DiskImpact
          parameters.material.density() * parameters.geometry.volume(),
          partner.material().density() *
            parameters.geometry.with_radius(partner.radius()).volume(),
-         parameters.impact.velocity(),
+         parameters.impact.normal_velocity(),
          parameters.material.velocity_unit(),
          parameters.geometry.radius(),
          body,
@@ -49,7 +49,7 @@ namespace DiskImpact
     // Hertz's impact of the sphere on the wall, or of the pair as its
     // equivalent body with the reduced mass; a^2 = R_eff delta_max.
     const auto  &material = parameters.material;
-    const double v0   = parameters.impact.velocity() * material.velocity_unit();
+    const double v0   = parameters.impact.normal_velocity() * material.velocity_unit();
     double       mass = material.density() * parameters.geometry.volume();
     Reference::ContactBody body{parameters.geometry.radius(),
                                 material.in_plane_young_modulus(),
@@ -91,6 +91,20 @@ namespace DiskImpact
       estimate_collision(parameters).contact_time);
   }
 
+  double
+  contact_drift(const Parameters &parameters)
+  {
+    const double R = parameters.geometry.radius();
+    const double c = parameters.material.velocity_unit();
+    const double spin_rate =
+      std::abs(parameters.impact.spin()) * c / R +
+      4. * parameters.contact.friction_coefficient() *
+        parameters.impact.normal_velocity() * c / R;
+    return spin_rate == 0. ?
+             0. :
+             R * spin_rate * estimate_collision(parameters).contact_time;
+  }
+
   CollisionEstimate
   estimate_collision(const Parameters &parameters)
   {
@@ -100,7 +114,7 @@ namespace DiskImpact
     return Reference::estimate_wall_collision(
       {parameters.geometry.is_sphere(),
        material.density() * parameters.geometry.volume(),
-       parameters.impact.velocity(),
+       parameters.impact.normal_velocity(),
        material.velocity_unit(),
        material.in_plane_young_modulus(),
        parameters.geometry.radius(),
@@ -155,7 +169,7 @@ namespace DiskImpact
       mass,
       Reference::hertz_sphere_stiffness(E2, R),
       tau,
-      parameters.impact.velocity() * material.velocity_unit());
+      parameters.impact.normal_velocity() * material.velocity_unit());
   }
 
   double

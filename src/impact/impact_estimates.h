@@ -38,6 +38,16 @@ namespace DiskImpact
   CollisionEstimate
   estimate_collision(const Parameters &parameters);
 
+  /**
+   * How far the contact moves along the body's edge as the body turns
+   * while in contact: R times the largest angle, (|omega0| + 4 mu v_n / R)
+   * times the contact time (the spin friction can add to a disk with
+   * epsilon <= 1 is 2 mu (1 + epsilon) v_n / R). Zero for a head-on impact
+   * without friction and spin.
+   */
+  double
+  contact_drift(const Parameters &parameters);
+
   /// Throws an InputError unless a fixed 'Time step' suits the contact
   /// time estimate_collision() expects (TimeIntegrator::check_time_step()).
   void

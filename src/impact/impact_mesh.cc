@@ -30,6 +30,13 @@ namespace DiskImpact
            parameters.geometry.radius();
   }
 
+  double
+  fine_zone_factor(const Parameters &parameters)
+  {
+    return parameters.impact.fine_zone_radius() +
+           contact_drift(parameters) / graded_width(parameters);
+  }
+
   namespace
   {
     /// The contact line's direction: a disk's rim in 3D touches the wall
@@ -66,7 +73,7 @@ namespace DiskImpact
                             graded_width(parameters),
                             parameters.impact.elements_across_contact(),
                             parameters.impact.grading(),
-                            parameters.impact.fine_zone_radius(),
+                            fine_zone_factor(parameters),
                             max_cells,
                             rim_direction<dim>(geometry));
     }

@@ -18,6 +18,12 @@ namespace DiskImpact
   double
   graded_width(const Parameters &parameters);
 
+  /// The fine zone's radius over graded_width(): 'Fine zone radius', and
+  /// as far again as the contact moves along the edge while the body
+  /// turns (contact_drift()).
+  double
+  fine_zone_factor(const Parameters &parameters);
+
   /// The impact's mesh: the geometry's (with a partner body both bodies'),
   /// graded toward the contact point; throws an InputError if it would
   /// exceed about @p max_cells cells.

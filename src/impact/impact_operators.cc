@@ -37,10 +37,11 @@ namespace DiskImpact
     // reach plus three times the largest approach the 1-DOF model expects
     // (or the Hertz zone's own gap a^2 / 2R, if larger).
     const auto estimate = estimate_collision(parameters);
-    candidate_bound =
-      (law ? law->reach() : 0.) +
-      3. * std::max(estimate.largest_compression,
-                    largest_half_width * largest_half_width / (2. * R));
+    // A turning body's contact moves along its edge (contact_drift()).
+    const double reach = largest_half_width + contact_drift(parameters);
+    candidate_bound    = (law ? law->reach() : 0.) +
+                      3. * std::max(estimate.largest_compression,
+                                    reach * reach / (2. * R));
     // No inertia on the edge within the uniformly refined contact zone;
     // with the constraint, on all the candidates' faces (their undeformed
     // gap t^2 / 2R is below the bound).

@@ -25,6 +25,35 @@ namespace DiskImpact
 
   namespace
   {
+    /// The rigid rotation e_z x (x - c) about the centre @p c, or with
+    /// @p position the position x - c.
+    template <int dim>
+    class RotationField : public Function<dim>
+    {
+    public:
+      explicit RotationField(const dealii::Point<dim> &center,
+                             const bool                position = false)
+          : Function<dim>(dim)
+          , center(center)
+          , position(position)
+      {}
+
+      double
+      value(const dealii::Point<dim> &x,
+            const unsigned int        component) const override
+      {
+        if (position)
+          return x[component] - center[component];
+        return component == 0 ? -(x[1] - center[1]) :
+               component == 1 ? x[0] - center[0] :
+                                0.;
+      }
+
+    private:
+      const dealii::Point<dim> center;
+      const bool               position;
+    };
+
     /// What makes an impact's result unphysical, for the messages.
     const std::string likely_causes =
       "the body is far too stiff or too soft: volumetric locking (a Poisson "
@@ -45,7 +74,11 @@ namespace DiskImpact
                        "energy_strain",
                        "energy_contact",
                        "energy_dissipated",
-                       "energy_total"});
+                       "energy_friction",
+                       "energy_total",
+                       "tangential_force",
+                       "v_tangential_com",
+                       "spin"});
     }
 
     /// The locally owned entries of @p x of all ranks, in DoF order, on
@@ -114,7 +147,7 @@ namespace DiskImpact
       , with_outputs(write_outputs)
       , radius(parameters.geometry.radius())
       , velocity_unit(parameters.material.velocity_unit())
-      , impact_speed(parameters.impact.velocity() * velocity_unit)
+      , impact_speed(parameters.impact.normal_velocity() * velocity_unit)
       , body_mass(parameters.material.density() * parameters.geometry.volume())
       , domain_factor(1. / parameters.geometry.domain_share())
       , force_unit(DiskImpact::force_unit(parameters))
@@ -127,6 +160,8 @@ namespace DiskImpact
       , series(time_series_table())
   {
     summary.velocity = parameters.impact.velocity();
+    summary.angle    = parameters.impact.incidence_angle_degrees();
+    summary.friction = parameters.contact.friction_coefficient();
     (parameters.geometry.is_sphere() ? summary.ramirez_u :
                                        summary.schwager_alpha) =
       dissipation_parameter(parameters);
@@ -202,13 +237,28 @@ namespace DiskImpact
           std::pow(parameters.material.transverse_wave_speed() / radius, 2),
           parameters.impact.n_projected_modes());
     const RigidWall<dim> wall = parameters.contact.wall<dim>();
-    zone                      = std::make_unique<ContactZone>(op,
+    const double         mu   = parameters.contact.friction_coefficient();
+    // A whole disk: its tangential motion and spin; a rotation of the body
+    // (friction, an initial spin) is taken exactly by the contact, about
+    // the discrete body's centre of mass (the disk's centre up to the
+    // discretization).
+    tracks_rotation = dim == 2 && !geometry.is_sphere() &&
+                      !geometry.has_symmetry_boundary() && !pair;
+    const bool turning =
+      tracks_rotation && (mu > 0. || parameters.impact.spin() != 0.);
+    rotation_center = turning ? center_of_mass() :
+                                embedded<dim>(geometry.center());
+    zone            = std::make_unique<ContactZone>(op,
                                          wall,
                                          law,
-                                         embedded<dim>(geometry.center()),
+                                         rotation_center,
                                          operators->candidate_bound,
                                          pair,
                                          dim == 3 && geometry.is_sphere());
+    if (mu > 0.)
+      zone->enable_friction(mu);
+    if (turning)
+      zone->enable_rotation();
     stepper                   = std::make_unique<ContactStepper<dim>>(op,
                                                     constraint_map,
                                                     *operators->mass_product,
@@ -248,6 +298,8 @@ namespace DiskImpact
       }
     else
       v.add(-impact_speed, along_normal);
+    if (tracks_rotation)
+      set_up_rotation(v);
     stepper->start(v, dt);
     // The centre of mass's motion along the wall normal is the momentum
     // (M x) . n over the mass n . M n (valid for a redistributed mass too).
@@ -257,6 +309,85 @@ namespace DiskImpact
     energy_initial =
       domain_factor * 0.5 * (work * stepper->mass_times_velocity());
     v_com_initial = mean_along_normal(v);
+  }
+
+  template <int dim>
+  dealii::Point<dim>
+  ImpactSimulation<dim>::center_of_mass() const
+  {
+    // x_com . e_d = (M e_d) . x / (M e_d) . e_d, the position field x
+    // interpolated exactly (it is linear).
+    auto position = op.create_vector(), along = op.create_vector();
+    VectorTools::interpolate(op.get_mapping(),
+                             op.get_dof_handler(),
+                             RotationField<dim>(dealii::Point<dim>(), true),
+                             position);
+    dealii::Point<dim> center;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        std::vector<double> unit(dim, 0.);
+        unit[d] = 1.;
+        VectorTools::interpolate(op.get_mapping(),
+                                 op.get_dof_handler(),
+                                 Functions::ConstantFunction<dim>(unit),
+                                 along);
+        const auto momentum = op.mass_functional(along);
+        center[d]           = (momentum * position) / (momentum * along);
+      }
+    return center;
+  }
+
+  template <int dim>
+  void
+  ImpactSimulation<dim>::set_up_rotation(PETScWrappers::MPI::Vector &v)
+  {
+    const RigidWall<dim> wall          = parameters.contact.wall<dim>();
+    const auto          &center        = rotation_center;
+    auto                 along_tangent = op.create_vector();
+    auto                 rotation      = op.create_vector();
+    std::vector<double>  components(dim);
+    for (unsigned int d = 0; d < dim; ++d)
+      components[d] = wall.tangents()[0][d];
+    VectorTools::interpolate(op.get_mapping(),
+                             op.get_dof_handler(),
+                             Functions::ConstantFunction<dim>(components),
+                             along_tangent);
+    // The rotation e_z x (x - c) is linear, so its interpolant is exact.
+    VectorTools::interpolate(op.get_mapping(),
+                             op.get_dof_handler(),
+                             RotationField<dim>(center),
+                             rotation);
+    op.get_constraints().distribute(along_tangent);
+    op.get_constraints().distribute(rotation);
+    tangent_momentum = op.mass_functional(along_tangent);
+    tangent_mass     = tangent_momentum * along_tangent;
+    rotation_momentum = op.mass_functional(rotation);
+    inertia           = rotation_momentum * rotation;
+    if (zone->tracks_rotation())
+      stepper->track_rotation(rotation, rotation_momentum);
+    v.add(parameters.impact.tangential_velocity() * velocity_unit,
+          along_tangent,
+          parameters.impact.spin() * velocity_unit / radius,
+          rotation);
+    // As the discrete body moves: its centre of mass and the disk's centre
+    // differ by the discretization.
+    v_tangent_initial = mean_along_tangent(v);
+    spin_initial      = mean_rotation(v);
+  }
+
+  template <int dim>
+  double
+  ImpactSimulation<dim>::mean_along_tangent(
+    const PETScWrappers::MPI::Vector &x) const
+  {
+    return tracks_rotation ? (tangent_momentum * x) / tangent_mass : 0.;
+  }
+
+  template <int dim>
+  double
+  ImpactSimulation<dim>::mean_rotation(const PETScWrappers::MPI::Vector &x) const
+  {
+    return tracks_rotation ? (rotation_momentum * x) / inertia : 0.;
   }
 
   template <int dim>
@@ -323,6 +454,13 @@ namespace DiskImpact
     dt    = step.dt;
     state = step.state;
     impulse += dt * domain_factor * state.force_average;
+    tangential_impulse += dt * domain_factor * state.tangential_force_average[0];
+    if (tracks_rotation && state.force_average > 0.)
+      summary.oblique.rotation_in_contact =
+        std::max(summary.oblique.rotation_in_contact,
+                 std::abs(mean_rotation(stepper->displacement())));
+    angular_impulse += dt * domain_factor * state.torque_average;
+    friction_work += domain_factor * state.friction_work;
     dissipated += domain_factor * step.viscous_work;
     ++summary.steps;
   }
@@ -341,8 +479,8 @@ namespace DiskImpact
       0.5 * domain_factor * (work * stepper->stiffness_times_displacement());
     const double v_com = mean_along_normal(v);
     const double x_com = mean_along_normal(u) / radius;
-    const double total =
-      kinetic + strain + domain_factor * step.energy + dissipated;
+    const double total = kinetic + strain + domain_factor * step.energy +
+                         dissipated + friction_work;
     // The step's mean force (its impulse / dt): the time discretization fixes
     // this mean, not the end-of-step force (docs/theory/impact-method.md).
     const double force = domain_factor * step.force_average / force_unit;
@@ -372,7 +510,12 @@ namespace DiskImpact
                                strain,
                                domain_factor * step.energy,
                                dissipated,
-                               total})
+                               friction_work,
+                               total,
+                               domain_factor *
+                                 step.tangential_force_average[0] / force_unit,
+                               mean_along_tangent(v) / velocity_unit,
+                               mean_rotation(v) * radius / velocity_unit})
       series.add(value);
     summary.delta_max = std::max(summary.delta_max, -x_com);
     summary.force_max = std::max(summary.force_max, force);
@@ -465,6 +608,10 @@ namespace DiskImpact
     summary.epsilon          = -v_com_final / v_com_initial;
     summary.contact_time     = contact_end * velocity_unit / radius;
     summary.energy_error     = energy_error;
+    if (parameters.contact.friction_coefficient() > 0.)
+      summary.oblique.friction_work = friction_work / energy_initial;
+    if (tracks_rotation)
+      finish_oblique();
     if (bodies)
       finish_pair();
     else
@@ -487,6 +634,47 @@ namespace DiskImpact
     summary.triangular_solve_time = stepper->triangular_solve_time();
     summary.contact_dofs          = stepper->n_contact_dofs();
     summary.peak_memory_mb        = peak_memory_mb(communicator);
+  }
+
+  template <int dim>
+  void
+  ImpactSimulation<dim>::finish_oblique()
+  {
+    // Velocities in units of c, the contact point's tangential velocity
+    // v_t - omega R (the point of the rim nearest the wall; the wall's
+    // tangent is e_z x n).
+    const auto  &v       = stepper->velocity();
+    const double c       = velocity_unit;
+    const double v_t     = mean_along_tangent(v);
+    const double omega   = mean_rotation(v);
+    const double v_n     = -mean_along_normal(v);
+    const double mass    = domain_factor * tangent_mass;
+    auto        &oblique = summary.oblique;
+    oblique.v_tangential_initial = v_tangent_initial / c;
+    oblique.v_tangential_final   = v_t / c;
+    oblique.spin_initial         = spin_initial * radius / c;
+    oblique.spin_final           = omega * radius / c;
+    oblique.v_contact_initial    = (v_tangent_initial - spin_initial * radius) / c;
+    oblique.v_contact_final      = (v_t - omega * radius) / c;
+    oblique.rebound_angle = std::atan2(v_t, -v_n) * 180. / M_PI;
+    oblique.friction_work = friction_work / energy_initial;
+    oblique.tangential_impulse_error =
+      std::abs(mass * (v_t - v_tangent_initial) - tangential_impulse) /
+      (body_mass * impact_speed);
+    oblique.angular_impulse_error =
+      std::abs(domain_factor * inertia * (omega - spin_initial) -
+               angular_impulse) /
+      (body_mass * impact_speed * radius);
+    // Maw, Barber & Fawcett's angles without their material factor: the
+    // contact point's tangential velocity over mu (1 + e) v_n / 2.
+    const double mu = parameters.contact.friction_coefficient();
+    if (mu > 0.)
+      {
+        const double scale =
+          0.5 * mu * (1. + summary.epsilon) * impact_speed / c;
+        oblique.psi_incident = oblique.v_contact_initial / scale;
+        oblique.psi_rebound  = oblique.v_contact_final / scale;
+      }
   }
 
   template <int dim>

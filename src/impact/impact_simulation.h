@@ -97,6 +97,23 @@ namespace DiskImpact
     /// The centre-of-mass component of x along the wall normal.
     double
     mean_along_normal(const dealii::PETScWrappers::MPI::Vector &x) const;
+    /// The centre-of-mass component of x along the wall's tangent, and
+    /// its rotation about e_z (whole disk).
+    double
+    mean_along_tangent(const dealii::PETScWrappers::MPI::Vector &x) const;
+    double
+    mean_rotation(const dealii::PETScWrappers::MPI::Vector &x) const;
+    /// The discrete body's centre of mass (x M-weighted).
+    dealii::Point<dim>
+    center_of_mass() const;
+    /// The tangential velocity and spin before the impact, and the fields
+    /// and momenta that measure them.
+    void
+    set_up_rotation(dealii::PETScWrappers::MPI::Vector &v);
+    /// The oblique impact's results: tangential restitution, spin,
+    /// rebound angles, impulse balances.
+    void
+    finish_oblique();
     /// The kinetic energy of the centre of mass (of each body) at the
     /// velocity v, whose relative centre-of-mass velocity is @p v_com.
     double
@@ -134,6 +151,17 @@ namespace DiskImpact
     /// n, its momentum functional M n and the mass n . M n.
     dealii::PETScWrappers::MPI::Vector         along_normal, normal_momentum;
     double                                     normal_mass = 0.;
+    /// A whole disk: its motion along the wall's tangent t and its rotation
+    /// about e_z through its centre (the fields t and e_z x (x - c), their
+    /// momentum functionals, mass and moment of inertia).
+    bool                               tracks_rotation = false;
+    dealii::Point<dim>                 rotation_center;
+    dealii::PETScWrappers::MPI::Vector tangent_momentum, rotation_momentum;
+    double                             tangent_mass = 0., inertia = 0.;
+    double v_tangent_initial = 0., spin_initial = 0.;
+    /// The wall's tangential and angular impulses so far, and the energy
+    /// friction dissipated.
+    double tangential_impulse = 0., angular_impulse = 0., friction_work = 0.;
     mutable dealii::PETScWrappers::MPI::Vector work, product;
     double                                     energy_initial = 0.;
     double                                     v_com_initial  = 0.;

@@ -36,7 +36,24 @@ namespace DiskImpact
                     "momentum_error",
                     "one_dof_epsilon_unloading",
                     "ramirez_u",
-                    "peak_memory_mb"});
+                    "peak_memory_mb",
+                    "angle",
+                    "friction",
+                    "v_tangential_initial",
+                    "v_tangential_final",
+                    "tangential_restitution",
+                    "spin_initial",
+                    "spin_final",
+                    "v_contact_initial",
+                    "v_contact_final",
+                    "contact_point_restitution",
+                    "rebound_angle",
+                    "psi_incident",
+                    "psi_rebound",
+                    "friction_work",
+                    "rotation_in_contact",
+                    "tangential_impulse_error",
+                    "angular_impulse_error"});
     table.start_row();
     for (const double value : {s.velocity,
                                s.epsilon,
@@ -63,6 +80,25 @@ namespace DiskImpact
     table.add(s.one_dof_epsilon_unloading);
     table.add(s.ramirez_u);
     table.add(s.peak_memory_mb);
+    const ObliqueSummary &o = s.oblique;
+    for (const double value : {s.angle,
+                               s.friction,
+                               o.v_tangential_initial,
+                               o.v_tangential_final,
+                               o.tangential_restitution(),
+                               o.spin_initial,
+                               o.spin_final,
+                               o.v_contact_initial,
+                               o.v_contact_final,
+                               o.contact_point_restitution(),
+                               o.rebound_angle,
+                               o.psi_incident,
+                               o.psi_rebound,
+                               o.friction_work,
+                               o.rotation_in_contact,
+                               o.tangential_impulse_error,
+                               o.angular_impulse_error})
+      table.add(value);
     return table;
   }
 } // namespace DiskImpact

@@ -7,6 +7,55 @@ namespace DiskImpact
 {
   class CsvTable;
 
+  /**
+   * What an impact on the whole disk gives beyond the normal restitution
+   * (velocities in units of c, spins of c / R, angles in degrees; NaN where
+   * they do not apply). The wall's tangent t = e_z x n; the contact point
+   * is the rim's point nearest the wall, with tangential velocity
+   * v_t - omega R.
+   */
+  struct ObliqueSummary
+  {
+    double v_tangential_initial = std::nan(""); ///< centre of mass, along t
+    double v_tangential_final   = std::nan("");
+    double spin_initial         = std::nan(""); ///< omega about e_z
+    double spin_final           = std::nan("");
+    double v_contact_initial    = std::nan(""); ///< contact point, along t
+    double v_contact_final      = std::nan("");
+    /// The centre of mass's velocity after the impact against the normal.
+    double rebound_angle = std::nan("");
+    /// 2 v_contact / (mu (1 + epsilon) v_n,i) before and after.
+    double psi_incident = std::nan("");
+    double psi_rebound  = std::nan("");
+    /// The largest angle [rad] the body turned while in contact: the
+    /// kinematics are linear in it (docs/theory/friction.md).
+    double rotation_in_contact = 0.;
+    /// The energy friction dissipated / E(0).
+    double friction_work = std::nan("");
+    /// |m dv_t - J_t| / (m v_n,i) and |I d omega - J_theta| / (m v_n,i R).
+    double tangential_impulse_error = std::nan("");
+    double angular_impulse_error    = std::nan("");
+
+    /// v_t,final / v_t,initial (NaN without a tangential velocity, below
+    /// 1e-12 c).
+    double
+    tangential_restitution() const
+    {
+      return std::abs(v_tangential_initial) > 1e-12 ?
+               v_tangential_final / v_tangential_initial :
+               std::nan("");
+    }
+    /// -v_contact,final / v_contact,initial (-1: unchanged, 1: reversed;
+    /// NaN as above).
+    double
+    contact_point_restitution() const
+    {
+      return std::abs(v_contact_initial) > 1e-12 ?
+               -v_contact_final / v_contact_initial :
+               std::nan("");
+    }
+  };
+
   /// What one impact gives (lengths in units of R, velocities of c).
   struct ImpactSummary
   {
@@ -45,6 +94,11 @@ namespace DiskImpact
     /// The largest resident memory of the run's processes, summed over
     /// the ranks [MB].
     double peak_memory_mb = 0.;
+    /// The impact's angle of incidence [degrees] and the wall's friction
+    /// coefficient.
+    double         angle    = 0.;
+    double         friction = 0.;
+    ObliqueSummary oblique;
   };
 
   /// The one-row summary table of @p summary (summary.csv).

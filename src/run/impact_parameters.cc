@@ -7,6 +7,7 @@
 
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -58,7 +59,25 @@ namespace DiskImpact
                       Patterns::Double(),
                       "Impact speed v_i in units of c = sqrt(E2 / rho) [-], "
                       "0 < v_i <= 0.5; with a partner body (subsection "
-                      "Partner) the relative speed, 0 < v_i <= 1.");
+                      "Partner) the relative speed, 0 < v_i <= 1. With an "
+                      "'Angle of incidence' theta the body approaches the "
+                      "wall at v_i cos(theta) and moves along it at "
+                      "v_i sin(theta).");
+    prm.declare_entry("Angle of incidence",
+                      "0",
+                      Patterns::Double(0., 89.),
+                      "Angle between the centre of mass's velocity before "
+                      "the impact and the wall's normal [degrees]; 0: "
+                      "head-on. The tangential velocity points along the "
+                      "wall's tangent (-n_y, n_x). An oblique impact needs "
+                      "the whole disk (Domain = full disk).");
+    prm.declare_entry("Spin",
+                      "0",
+                      Patterns::Double(),
+                      "The body's angular velocity before the impact about "
+                      "e_z, counterclockwise positive, in units of c / R "
+                      "[-] (rad/s in SI): omega R is the rim's speed. Needs "
+                      "the whole disk (Domain = full disk).");
     prm.declare_entry("Elements across contact",
                       "12",
                       Patterns::Integer(4, 1000),
@@ -146,6 +165,11 @@ namespace DiskImpact
                       "0.005, 0.01, 0.02, 0.05, 0.1, 0.2, 0.3",
                       Patterns::List(Patterns::Double(), 0),
                       "Task 'sweep': the impact speeds v_i / c [-].");
+    prm.declare_entry("Angles of incidence",
+                      "",
+                      Patterns::List(Patterns::Double(0., 89.), 0),
+                      "Task 'sweep': angles of incidence (as 'Angle of "
+                      "incidence') [degrees]; empty: 'Angle of incidence'.");
     prm.declare_entry("Poisson ratios",
                       "",
                       Patterns::List(Patterns::Double(), 0),
@@ -205,6 +229,8 @@ namespace DiskImpact
   {
     prm.enter_subsection("Impact");
     impact_velocity        = prm.get_double("Velocity");
+    incidence_angle        = prm.get_double("Angle of incidence");
+    initial_spin           = prm.get_double("Spin");
     contact_elements       = prm.get_integer("Elements across contact");
     mesh_grading           = prm.get_double("Grading");
     fine_zone              = prm.get_double("Fine zone radius");
@@ -217,6 +243,7 @@ namespace DiskImpact
     projected_modes        = prm.get_integer("Number of projected modes");
     sweep_velocities       = get_double_list(prm, "Velocities");
     sweep_poisson_ratios   = get_double_list(prm, "Poisson ratios");
+    sweep_angles           = get_double_list(prm, "Angles of incidence");
     sweep_relaxation_times = get_double_list(prm, "Relaxation times");
     sweep_partner_radii    = get_double_list(prm, "Partner radii");
     error_estimate         = prm.get_bool("Convergence study per point");
@@ -252,6 +279,18 @@ namespace DiskImpact
     return impact_velocity;
   }
 
+  double
+  ImpactParameters::normal_velocity() const
+  {
+    return impact_velocity * std::cos(incidence_angle * M_PI / 180.);
+  }
+
+  double
+  ImpactParameters::tangential_velocity() const
+  {
+    return impact_velocity * std::sin(incidence_angle * M_PI / 180.);
+  }
+
   void
   ImpactParameters::set_velocity(const double v)
   {
@@ -262,6 +301,21 @@ namespace DiskImpact
   ImpactParameters::velocities() const
   {
     return sweep_velocities;
+  }
+
+  const std::vector<double> &
+  ImpactParameters::incidence_angles() const
+  {
+    return sweep_angles;
+  }
+
+  bool
+  ImpactParameters::is_oblique() const
+  {
+    return incidence_angle != 0. || initial_spin != 0. ||
+           std::any_of(sweep_angles.begin(),
+                       sweep_angles.end(),
+                       [](const double angle) { return angle != 0.; });
   }
 
   const std::vector<double> &

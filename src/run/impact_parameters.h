@@ -23,10 +23,41 @@ namespace DiskImpact
     void
     parse_parameters(dealii::ParameterHandler &prm);
 
+    /// 'Velocity': the impact speed v_i (units of c).
     double
     velocity() const;
     void
     set_velocity(double v);
+    /// v_i cos(theta) toward the wall and v_i sin(theta) along its tangent
+    /// (units of c), theta the 'Angle of incidence'.
+    double
+    normal_velocity() const;
+    double
+    tangential_velocity() const;
+    /// 'Angle of incidence' [degrees].
+    double
+    incidence_angle_degrees() const
+    {
+      return incidence_angle;
+    }
+    void
+    set_incidence_angle_degrees(const double angle)
+    {
+      incidence_angle = angle;
+    }
+    /// 'Spin': the angular velocity before the impact (units of c / R).
+    double
+    spin() const
+    {
+      return initial_spin;
+    }
+    /// Whether the impact is oblique (or a sweep's is) or the body spins.
+    bool
+    is_oblique() const;
+    /// Task 'sweep': the 'Angles of incidence' (empty: 'Angle of
+    /// incidence').
+    const std::vector<double> &
+    incidence_angles() const;
     /// The sweep's velocities, Poisson ratios, relaxation times and
     /// partner radii (the latter three empty: the material's, the
     /// partner's).
@@ -128,8 +159,11 @@ namespace DiskImpact
 
   private:
     double              impact_velocity = 0.01;
+    double              incidence_angle = 0.;
+    double              initial_spin    = 0.;
     std::vector<double> sweep_velocities;
     std::vector<double> sweep_poisson_ratios;
+    std::vector<double> sweep_angles;
     std::vector<double> sweep_relaxation_times;
     std::vector<double> sweep_partner_radii;
     bool                error_estimate      = true;

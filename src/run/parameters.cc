@@ -198,6 +198,15 @@ namespace DiskImpact
     else if (task().traits.impacts)
       contact.check_wall(geometry, 0.05);
     impact.check_velocities(partner.is_body() ? 1. : 0.5);
+    require(!impact.is_oblique() ||
+              (geometry.dimension() == 2 && !geometry.is_sphere() &&
+               !geometry.has_symmetry_boundary() && !partner.is_body()),
+            "Impact: an oblique impact ('Angle of incidence' or 'Spin' not "
+            "0) is computed for the whole disk in two dimensions (Domain = "
+            "full disk, Dimension = 2) against the wall so far");
+    require(contact.friction_coefficient() == 0. || !partner.is_body(),
+            "Contact: 'Friction coefficient' > 0 acts on the wall; a "
+            "partner body's contact is frictionless so far");
     require(partner.is_body() || impact.partner_radii().empty(),
             "Impact: 'Partner radii' needs 'Kind = body' in subsection "
             "Partner");

@@ -8,6 +8,7 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/utilities.h>
 
+#include <cmath>
 #include <iostream>
 #include <sstream>
 
@@ -17,6 +18,28 @@ namespace DiskImpact
 
   namespace
   {
+    /// The oblique impact's results of @p s.
+    void
+    print_oblique(const ImpactSummary &s, std::ostream &out)
+    {
+      const ObliqueSummary &o = s.oblique;
+      out << "  tangential: v_t = " << o.v_tangential_initial << " -> "
+          << o.v_tangential_final
+          << " c (restitution " << o.tangential_restitution()
+          << "), spin = " << o.spin_initial << " -> " << o.spin_final
+          << " c/R\n"
+          << "  contact point: v_t - omega R = " << o.v_contact_initial
+          << " -> " << o.v_contact_final << " c (restitution "
+          << o.contact_point_restitution() << "), rebound angle "
+          << o.rebound_angle << " degrees";
+      if (std::isfinite(o.psi_incident))
+        out << ", psi " << o.psi_incident << " -> " << o.psi_rebound;
+      out << "\n  friction work = " << o.friction_work
+          << " of E(0), tangential impulse error = "
+          << o.tangential_impulse_error
+          << ", angular impulse error = " << o.angular_impulse_error << "\n";
+    }
+
     /// Task 'impact': one impact, its time series, summary and a printout.
     void
     run_impact_task(const Parameters &parameters, MPI_Comm communicator)
@@ -24,8 +47,15 @@ namespace DiskImpact
       ConditionalOStream pcout(std::cout,
                                Utilities::MPI::this_mpi_process(communicator) ==
                                  0);
-      pcout << "Impact at v = " << parameters.impact.velocity() << " c"
-            << std::endl;
+      pcout << "Impact at v = " << parameters.impact.velocity() << " c";
+      if (parameters.impact.is_oblique())
+        pcout << ", angle of incidence "
+              << parameters.impact.incidence_angle_degrees()
+              << " degrees, spin " << parameters.impact.spin() << " c/R";
+      if (parameters.contact.friction_coefficient() > 0.)
+        pcout << ", friction coefficient "
+              << parameters.contact.friction_coefficient();
+      pcout << std::endl;
       const ImpactSummary s = run_impact(parameters, communicator);
       on_root(communicator, [&]() {
         write_summary(s, parameters.run.output_directory + "/summary.csv");
@@ -69,6 +99,8 @@ namespace DiskImpact
                "v2') / (v1 - v2), delta_max the approach of the centres of "
                "mass";
       out << "\n";
+      if (std::isfinite(s.oblique.v_tangential_initial))
+        print_oblique(s, out);
       const UnitSystem &units = parameters.units;
       if (units.is_si())
         out << "  in SI: v = " << parameters.impact.velocity() * units.speed()

@@ -50,16 +50,27 @@ namespace DiskImpact
                                                 "alpha",
                                                 "one_dof_epsilon",
                                                 "partner_radius",
-                                                "ramirez_u"};
+                                                "ramirez_u",
+                                                "angle",
+                                                "friction",
+                                                "tangential_restitution",
+                                                "contact_point_restitution",
+                                                "spin_final",
+                                                "rebound_angle",
+                                                "psi_incident",
+                                                "psi_rebound",
+                                                "friction_work"};
     /// Positions of the columns that identify a point.
     constexpr unsigned int velocity_column = 0, poisson_column = 1,
-                           relaxation_column = 13, partner_column = 16;
+                           relaxation_column = 13, partner_column = 16,
+                           angle_column = 18;
 
     /// The entries that choose the points (and whether to resume), which a
     /// resumed sweep may change.
     const std::vector<std::pair<std::string, std::string>> point_entries{
       {"", "Output directory"},
       {"Impact", "Velocities"},
+      {"Impact", "Angles of incidence"},
       {"Impact", "Poisson ratios"},
       {"Impact", "Relaxation times"},
       {"Impact", "Partner radii"},
@@ -76,8 +87,8 @@ namespace DiskImpact
     };
 
     /// The sweep's points in the order of the table: Poisson ratios, then
-    /// relaxation times, then partner radii, then velocities (empty lists:
-    /// the material's, the partner's).
+    /// relaxation times, then partner radii, then angles, then velocities
+    /// (empty lists: the material's, the partner's, 'Angle of incidence').
     std::vector<Point>
     sweep_points(const Parameters &parameters)
     {
@@ -91,6 +102,8 @@ namespace DiskImpact
         for (const double tau :
              or_material(parameters.impact.relaxation_times()))
           for (const double r2 : or_material(parameters.impact.partner_radii()))
+            for (const double angle :
+                 or_material(parameters.impact.incidence_angles()))
             for (const double v : parameters.impact.velocities())
               {
                 Point point{parameters, Row(column_names.size(), std::nan(""))};
@@ -103,7 +116,13 @@ namespace DiskImpact
                 if (!std::isnan(r2))
                   partner = partner.with_radius(r2);
                 point.parameters.impact.set_velocity(v);
+                if (!std::isnan(angle))
+                  point.parameters.impact.set_incidence_angle_degrees(angle);
                 point.row[velocity_column] = v;
+                point.row[angle_column] =
+                  point.parameters.impact.incidence_angle_degrees();
+                point.row[angle_column + 1] =
+                  parameters.contact.friction_coefficient();
                 point.row[poisson_column]  = material.poisson_ratio();
                 point.row[8]               = material.in_plane_poisson_ratio();
                 point.row[relaxation_column] = material.relaxation_time();
@@ -118,8 +137,11 @@ namespace DiskImpact
     bool
     same_point(const Row &a, const Row &b)
     {
-      for (const unsigned int c :
-           {velocity_column, poisson_column, relaxation_column, partner_column})
+      for (const unsigned int c : {velocity_column,
+                                   poisson_column,
+                                   relaxation_column,
+                                   partner_column,
+                                   angle_column})
         if (std::abs(a[c] - b[c]) > 1e-12 * std::max(1., std::abs(b[c])))
           return false;
       return true;
@@ -162,7 +184,14 @@ namespace DiskImpact
              {12, wall_time},
              {14, s.schwager_alpha},
              {15, s.one_dof_epsilon},
-             {17, s.ramirez_u}})
+             {17, s.ramirez_u},
+             {20, s.oblique.tangential_restitution()},
+             {21, s.oblique.contact_point_restitution()},
+             {22, s.oblique.spin_final},
+             {23, s.oblique.rebound_angle},
+             {24, s.oblique.psi_incident},
+             {25, s.oblique.psi_rebound},
+             {26, s.oblique.friction_work}})
         row[column] = value;
       return row;
     }
@@ -202,6 +231,12 @@ namespace DiskImpact
            << std::fixed << std::setw(8) << row[12] << " s";
       if (!std::isnan(row[partner_column]))
         line << std::setprecision(4) << "  R2 = " << row[partner_column];
+      // An oblique impact: its angle, e_t, the contact point's restitution
+      // and the spin after.
+      if (row[angle_column] != 0.)
+        line << std::setprecision(4) << "  angle " << row[angle_column]
+             << " e_t " << row[20] << " beta " << row[21] << " spin "
+             << std::setprecision(6) << row[22];
       return line.str();
     }
 
@@ -608,14 +643,19 @@ namespace DiskImpact
       partners.clear();
     for (const double r2 : impact.partner_radii())
       partners.push_back(parameters.partner.with_radius(r2));
+    std::vector<double> angles = impact.incidence_angles();
+    if (angles.empty())
+      angles.push_back(impact.incidence_angle_degrees());
     for (const Partner &other : partners)
-      for (const double v : impact.velocities())
-        {
-          Parameters point = parameters;
-          point.partner    = other;
-          point.impact.set_velocity(v);
-          check_impact_time_step(point);
-        }
+      for (const double angle : angles)
+        for (const double v : impact.velocities())
+          {
+            Parameters point = parameters;
+            point.partner    = other;
+            point.impact.set_velocity(v);
+            point.impact.set_incidence_angle_degrees(angle);
+            check_impact_time_step(point);
+          }
     require(!impact.velocities().empty(),
             "Impact: 'Velocities' is empty: task 'sweep' needs at least "
             "one impact speed");
@@ -653,6 +693,11 @@ namespace DiskImpact
       const auto &velocities = parameters.impact.velocities();
       fastest.impact.set_velocity(
         *std::max_element(velocities.begin(), velocities.end()));
+      // The largest normal speed: the smallest angle.
+      const auto &angles = parameters.impact.incidence_angles();
+      if (!angles.empty())
+        fastest.impact.set_incidence_angle_degrees(
+          *std::min_element(angles.begin(), angles.end()));
       create_impact_mesh(fastest,
                          mesh,
                          cell_budget(fastest.finite_element.degree));
@@ -666,8 +711,9 @@ namespace DiskImpact
     {
       TaskEntry task;
       task.name        = "sweep";
-      task.description = "epsilon(v) for the velocities of subsection Impact "
-                         "(restitution.csv).";
+      task.description = "epsilon(v) for the velocities of subsection Impact, "
+                         "and for its angles of incidence the tangential "
+                         "restitution and spin (restitution.csv).";
       task.traits.impacts           = true;
       task.traits.sweeps            = true;
       task.traits.partner_body      = true;
