@@ -120,6 +120,9 @@ def main():
           "| friction work |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for r in table:
+        for key, value in r.items():  # no "-0.0000" for a zero
+            if abs(value) < 5e-13:
+                r[key] = 0.
         print(f"| {r['angle']:g} | {r['v_n']:.5f} | {r['psi1']:.3f} "
               f"| {r['epsilon']:.6f} "
               f"| {r['e_t']:.6f} | {r['e_t_rigid']:.6f} "

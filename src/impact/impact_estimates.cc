@@ -6,6 +6,7 @@
 #include "reference/viscoelastic_spheres.h"
 #include "run/parameters.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace DiskImpact
@@ -94,12 +95,19 @@ namespace DiskImpact
   double
   contact_drift(const Parameters &parameters)
   {
-    const double R = parameters.geometry.radius();
-    const double c = parameters.material.velocity_unit();
+    const double R     = parameters.geometry.radius();
+    const double c     = parameters.material.velocity_unit();
+    const auto  &im    = parameters.impact;
+    const double slide = std::abs(im.tangential_velocity() - im.spin());
+    // Friction changes omega R by at most 2 mu v_n (1 + epsilon), and by
+    // at most 2 |v_t - omega0 R| / (1 + k) if the contact point stops and
+    // reverses (k = 1/2).
     const double spin_rate =
-      std::abs(parameters.impact.spin()) * c / R +
-      4. * parameters.contact.friction_coefficient() *
-        parameters.impact.normal_velocity() * c / R;
+      (std::abs(im.spin()) +
+       std::min(4. * parameters.contact.friction_coefficient() *
+                  im.normal_velocity(),
+                4. / 3. * slide)) *
+      c / R;
     return spin_rate == 0. ?
              0. :
              R * spin_rate * estimate_collision(parameters).contact_time;

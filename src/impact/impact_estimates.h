@@ -40,10 +40,11 @@ namespace DiskImpact
 
   /**
    * How far the contact moves along the body's edge as the body turns
-   * while in contact: R times the largest angle, (|omega0| + 4 mu v_n / R)
-   * times the contact time (the spin friction can add to a disk with
-   * epsilon <= 1 is 2 mu (1 + epsilon) v_n / R). Zero for a head-on impact
-   * without friction and spin.
+   * while in contact: R times the largest angle, the contact time times
+   * |omega0| plus the spin friction can add to a disk, at most
+   * min(4 mu v_n, 4/3 |v_t - omega0 R|) / R (epsilon <= 1; the contact
+   * point at most reversed). Zero for a head-on impact without friction
+   * and spin.
    */
   double
   contact_drift(const Parameters &parameters);
