@@ -34,7 +34,9 @@ namespace DiskImpact
     /// through the body's centre (friction's and, off the axis, the
     /// pressure's).
     double torque_average = 0.;
-    /// The energy friction dissipated in the step (>= 0).
+    /// The energy friction dissipated in the step: the mean traction's work
+    /// less the change of the stick's elastic energy (>= 0 but where the
+    /// Coulomb bound falls within the step).
     double friction_work = 0.;
     /// max(-g): the deepest penetration.
     double max_penetration = 0.;

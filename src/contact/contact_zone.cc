@@ -31,8 +31,6 @@ namespace DiskImpact
     struct Candidate
     {
       double                                                  ds, gap0, t;
-      double                                                  normal_arm;
-      std::array<double, 2>                                   tangential_arms;
       std::array<double, 2>                                   from_center;
       dealii::Point<dim>                                      x;
       std::vector<std::pair<types::global_dof_index, double>> row;
@@ -167,15 +165,10 @@ namespace DiskImpact
         (x - origin) - ((x - origin) * wall.normal) * wall.normal;
       return circular ? in_plane.norm() : in_plane * tangents[0];
     };
-    // The torque about e_z through the centre of a unit force along f.
-    const auto arm = [&](const dealii::Point<dim> &x, const Tensor<1, dim> &f) {
-      const Tensor<1, dim> r = x - body_center;
-      return r[0] * f[1] - r[1] * f[0];
-    };
 
-    // This rank's candidates, flattened for the exchange: ds, g0, t, x,
-    // the number of entries, then (DoF, b) pairs; the same for each
-    // tangential row.
+    // This rank's candidates, flattened for the exchange: ds, g0, t, x - c
+    // (x, y), x, the number of entries, then (DoF, b) pairs; the same for
+    // each tangential row.
     std::vector<double> local;
     for_each_curved_edge_face(
       dof_handler, [&](const auto &cell, const unsigned int f) {
@@ -221,9 +214,6 @@ namespace DiskImpact
                          {ds[q],
                           wall.gap(x[q]),
                           along_wall(x[q]),
-                          arm(x[q], wall.normal),
-                          arm(x[q], tangents[0]),
-                          dim == 3 ? arm(x[q], tangents[dim - 2]) : 0.,
                           x[q][0] - body_center[0],
                           x[q][1] - body_center[1]});
             for (unsigned int d = 0; d < dim; ++d)
@@ -249,13 +239,11 @@ namespace DiskImpact
           Candidate<dim> candidate{part[k],
                                    part[k + 1],
                                    part[k + 2],
-                                   part[k + 3],
-                                   {{part[k + 4], part[k + 5]}},
-                                   {{part[k + 6], part[k + 7]}},
+                                   {{part[k + 3], part[k + 4]}},
                                    {},
                                    {},
                                    {}};
-          k += 8;
+          k += 5;
           for (unsigned int d = 0; d < dim; ++d)
             candidate.x[d] = part[k++];
           candidate.tangential.resize(dim - 1);
@@ -313,8 +301,6 @@ namespace DiskImpact
         Point point{candidate.ds,
                     candidate.gap0,
                     candidate.t,
-                    candidate.normal_arm,
-                    candidate.tangential_arms,
                     candidate.from_center,
                     {},
                     {},
@@ -619,7 +605,7 @@ namespace DiskImpact
         state.energy += law->energy(g1) * point.ds;
         state.second_moment += p1 * point.t * point.t * point.ds;
         state.max_penetration = std::max(state.max_penetration, -g1);
-        state.torque_average += p_bar * point.normal_arm * point.ds;
+        state.torque_average += p_bar * lever(point, wall_normal) * point.ds;
         for (const auto &[i, b] : motion.normal_force)
           result.force[i] += point.ds * p_bar * b;
         if (rotation)
@@ -741,10 +727,12 @@ namespace DiskImpact
                 point.ds * tau_bar * motion.tangential_curvature[d];
           }
         state.tangential_force_average[d] += point.ds * tau_bar;
-        state.torque_average += point.ds * tau_bar * point.tangential_arms[d];
-        if (rotation && d == 0)
+        // The second tangent, e_z in 3D, has no torque about e_z.
+        if (d == 0)
           state.torque_average +=
-            point.ds * tau_bar * motion.tangential_force[d].back().second;
+            point.ds * tau_bar *
+            (lever(point, wall_tangent) +
+             (rotation ? motion.tangential_force[d].back().second : 0.));
         work += tau_bar * motion.slip_increment[d];
         energy0 += tau0 * tau0;
         energy1 += f.traction[d] * f.traction[d];
@@ -789,6 +777,13 @@ namespace DiskImpact
         point.history.traction = f.traction;
         point.history.sticking = f.sticking && motion.g1 < 0.;
       }
+  }
+
+  double
+  ContactZone::lever(const Point &point, const std::array<double, 2> &direction)
+  {
+    const auto &r = point.from_center;
+    return r[0] * direction[1] - r[1] * direction[0];
   }
 
   std::pair<double, double>

@@ -241,11 +241,7 @@ namespace DiskImpact
       double ds;   ///< JxW
       double gap0; ///< undeformed gap
       double t;    ///< coordinate along the wall from the contact point
-      /// The torque about e_z through the body's centre of a unit force
-      /// along the wall's normal and along each of its tangents.
-      double                normal_arm;
-      std::array<double, 2> tangential_arms;
-      /// x - c in the plane of rotation (x, y).
+      /// x - c in the plane of rotation (x, y), c the body's centre.
       std::array<double, 2> from_center;
       std::vector<std::pair<unsigned int, double>> row; ///< (position in D, b)
       /// (position in C, b) once all its DoFs are active, else empty.
@@ -288,6 +284,10 @@ namespace DiskImpact
     kinematics(const Point                  &point,
                const dealii::Vector<double> &u0,
                const dealii::Vector<double> &u1) const;
+    /// The torque about e_z through the body's centre of a unit force on
+    /// @p point along @p direction (in the plane of rotation).
+    static double
+    lever(const Point &point, const std::array<double, 2> &direction);
     /// The step's mean pressure p_bar and its derivative by g1.
     std::pair<double, double>
     mean_pressure(double         g0,

@@ -209,7 +209,7 @@ namespace DiskImpact
   }
 
   bool
-  CondensedSolver::solve_condensed(const FullMatrix<double> &s_matrix,
+  CondensedSolver::solve_condensed(const FullMatrix<double> &S,
                                    const Vector<double>     &y_C,
                                    const Force              &force,
                                    const double              tolerance,
@@ -224,14 +224,14 @@ namespace DiskImpact
     FullMatrix<double> jacobian;
     auto               residual = [&](const Vector<double> &u, bool with_jac) {
       auto [P, dP] = force(u);
-      s_matrix.vmult(sp, P);
+      S.vmult(sp, P);
       h = u;
       h -= y_C;
       h -= sp;
       if (with_jac)
         {
           jacobian.reinit(n, n);
-          s_matrix.mmult(jacobian, dP);
+          S.mmult(jacobian, dP);
           jacobian *= -1.;
           for (unsigned int i = 0; i < n; ++i)
             jacobian(i, i) += 1.;

@@ -25,25 +25,20 @@ namespace DiskImpact
 
   namespace
   {
-    /// The rigid rotation e_z x (x - c) about the centre @p c, or with
-    /// @p position the position x - c.
+    /// The rigid rotation e_z x (x - c) about the centre @p c.
     template <int dim>
     class RotationField : public Function<dim>
     {
     public:
-      explicit RotationField(const dealii::Point<dim> &center,
-                             const bool                position = false)
+      explicit RotationField(const dealii::Point<dim> &center)
           : Function<dim>(dim)
           , center(center)
-          , position(position)
       {}
 
       double
       value(const dealii::Point<dim> &x,
             const unsigned int        component) const override
       {
-        if (position)
-          return x[component] - center[component];
         return component == 0 ? -(x[1] - center[1]) :
                component == 1 ? x[0] - center[0] :
                                 0.;
@@ -51,7 +46,6 @@ namespace DiskImpact
 
     private:
       const dealii::Point<dim> center;
-      const bool               position;
     };
 
     /// What makes an impact's result unphysical, for the messages.
@@ -320,7 +314,7 @@ namespace DiskImpact
     auto position = op.create_vector(), along = op.create_vector();
     VectorTools::interpolate(op.get_mapping(),
                              op.get_dof_handler(),
-                             RotationField<dim>(dealii::Point<dim>(), true),
+                             Functions::IdentityFunction<dim>(),
                              position);
     dealii::Point<dim> center;
     for (unsigned int d = 0; d < dim; ++d)
