@@ -16,12 +16,24 @@ Prints epsilon and the contact time of the DEM code beside diskimpact's,
 and fails (exit 1) unless LIGGGHTS (and Yade, where it ran) reproduces
 epsilon at the reference speed within --tolerance (1e-3).
 
+With --oblique SWEEP.csv (restitution.csv of diskimpact's task 'sweep'
+over 'Angles of incidence' for the same sphere, in its own units: the
+sphere in 3D, the same Poisson ratio and friction coefficient as the law)
+it also runs the oblique wall impact in each code with the exported lines
+(the tangential part included) at every angle of the sweep, at the sweep's
+speed v/c times the law's c: and prints, per angle, the tangential
+restitution e_t = v_t'/v_t, the spin R omega'/v_n and the rebound angle of
+the code beside diskimpact's, and the largest differences. It fails if a
+code's run fails or the sphere does not match the law.
+
 usage: bench/dem_check.py DIR [--tolerance 1e-3] [--yade]
+                              [--oblique SWEEP.csv]
        (installs Debian's liggghts and lammps if missing)
 """
 import argparse
 import csv
 import json
+import math
 import os
 import shutil
 import subprocess
@@ -37,6 +49,10 @@ def main():
     parser.add_argument("--tolerance", type=float, default=1e-3)
     parser.add_argument("--yade", action="store_true",
                         help="install Yade if missing (a larger install)")
+    parser.add_argument("--oblique", metavar="SWEEP_CSV",
+                        help="diskimpact's oblique sweep of the same sphere")
+    parser.add_argument("--oblique-speed", type=float, default=0.01,
+                        help="the DEM's oblique impacts at this speed [m/s]")
     args = parser.parse_args()
     subprocess.run([os.path.join(os.path.dirname(__file__),
                                  "dem_check_deps.sh")] +
@@ -84,6 +100,12 @@ def main():
     else:
         print("yade: not installed, skipped (bench/dem_check.py --yade "
               "installs it)")
+    if args.oblique:
+        codes = [("liggghts", "liggghts.txt"), ("lammps", "lammps.txt")]
+        if shutil.which("yade"):
+            codes.append(("yade", "yade.py"))
+        oblique_check(args.directory, law, args.oblique, radius, density,
+                      codes, args.oblique_speed)
     failed = False
     for code, results in checked.items():
         error = abs(results[1][2] - results[1][1])
@@ -92,6 +114,55 @@ def main():
         failed = failed or not error <= args.tolerance
     if failed:
         sys.exit("dem_check: a DEM code misses epsilon at the reference speed")
+
+
+def oblique_check(directory, law, sweep_csv, radius, density, codes,
+                  speed):
+    """The oblique impacts of the sweep in each code; prints the table."""
+    with open(sweep_csv, newline="") as f:
+        rows = [r for r in csv.DictReader(f) if r["status"] == "done"]
+    if not rows:
+        sys.exit(f"dem_check: no finished points in {sweep_csv}")
+    nu = float(law["parameters"]["Material"]["Poisson ratio"])
+    mu = float(law["dem"].get("friction_coefficient", 0.0))
+    for r in rows:
+        if (abs(float(r["poisson_ratio"]) - nu) > 1e-12 or
+                abs(float(r["friction"]) - mu) > 1e-12):
+            sys.exit(f"dem_check: the sweep {sweep_csv} has nu = "
+                     f"{r['poisson_ratio']}, mu = {r['friction']}; the law "
+                     f"has nu = {nu}, mu = {mu}")
+    c = law["si_scales"]["c_m_per_s"]
+    print(f"Oblique impacts: mu = {mu:g}, nu = {nu:g}, the sweep's speed "
+          f"times c = {c:.6g} m/s")
+    largest = {}
+    for code, snippet_name in codes:
+        snippet = open(os.path.join(directory, "dem", snippet_name)).read()
+        print(f"{code} ({snippet_name}):")
+        print("  angle   speed [m/s]  eps FE     eps DEM    e_t FE     "
+              "e_t DEM    R w'/v_n FE  DEM      rebound FE  DEM")
+        for r in rows:
+            angle = float(r["angle"])
+            v_n = float(r["velocity"]) * math.cos(math.radians(angle))
+            fe = {"epsilon": float(r["epsilon_base"]),
+                  "tangential_restitution": float(r["tangential_restitution"]),
+                  "spin": float(r["spin_final"]) / v_n,
+                  "rebound_angle": float(r["rebound_angle"])}
+            dem = dem_collision.oblique(code, snippet, radius, density, speed,
+                                        angle)
+            for key in fe:
+                largest[(code, key)] = max(largest.get((code, key), 0.0),
+                                           abs(dem[key] - fe[key]))
+            print(f"  {angle:5g}  {speed:11.5g}  {fe['epsilon']:.6f}  "
+                  f"{dem['epsilon']:.6f}  "
+                  f"{fe['tangential_restitution']:.6f}  "
+                  f"{dem['tangential_restitution']:.6f}  "
+                  f"{fe['spin']:9.5f}  {dem['spin']:9.5f}  "
+                  f"{fe['rebound_angle']:9.4f}  {dem['rebound_angle']:9.4f}")
+        print(f"  largest |DEM - FE|: epsilon "
+              f"{largest[(code, 'epsilon')]:.2e}, e_t "
+              f"{largest[(code, 'tangential_restitution')]:.2e}, spin "
+              f"{largest[(code, 'spin')]:.2e}, rebound angle "
+              f"{largest[(code, 'rebound_angle')]:.3f} degrees")
 
 
 if __name__ == "__main__":

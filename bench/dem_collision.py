@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Head-on collision of two identical spheres in a DEM code (LIGGGHTS, LAMMPS or Yade).
+"""Head-on or oblique collision of two identical spheres in a DEM code (LIGGGHTS, LAMMPS or Yade).
 
 Two spheres of radius R and density rho (atom type 1) sit on the x axis,
 just apart, and move toward each other with speed v each (relative speed
@@ -43,6 +43,12 @@ usage: bench/dem_collision.py --code liggghts|lammps|yade --snippet FILE
 
 As a module: collide(code, snippet_text, radius, density, speed, work_dir)
 returns (epsilon, contact_time); hertz_time(...) gives t_H.
+oblique(code, snippet_text, radius, density, speed, angle, work_dir) runs
+the collision at an angle of incidence: each sphere also moves along the
+contact plane (point-symmetric, so the contact plane acts on each sphere
+as a rigid wall would, friction and Mindlin's stiffness included) and it
+returns sphere 1's tangential restitution, spin and rebound angle as well
+(the y-velocity and z-spin of sphere 1 join the history).
 bench/dem_check_deps.sh installs the three codes.
 """
 import argparse
@@ -102,9 +108,9 @@ def time_step(code, snippet, radius, density, speed):
     return hertz_time(radius, density, E, nu, speed) / STEPS_PER_CONTACT
 
 
-def yade_script(snippet, radius, speed, dt, steps, gap):
+def yade_script(snippet, radius, speed, tangential, dt, steps, gap):
     """Yade's script: the snippet defines 'mat'; a PyRunner writes the
-    history 'step gap v1x v2x'."""
+    history 'step gap v1x v2x v1y omega1z'."""
     x = radius + 0.5 * gap
     return f"""\
 # ---- contact model (snippet) ----
@@ -113,15 +119,17 @@ def yade_script(snippet, radius, speed, dt, steps, gap):
 
 O.bodies.append([sphere((-{x!r}, 0, 0), {radius!r}, material=mat),
                  sphere(({x!r}, 0, 0), {radius!r}, material=mat)])
-O.bodies[0].state.vel = Vector3({speed!r}, 0, 0)
-O.bodies[1].state.vel = Vector3(-{speed!r}, 0, 0)
+O.bodies[0].state.vel = Vector3({speed!r}, {-tangential!r}, 0)
+O.bodies[1].state.vel = Vector3(-{speed!r}, {tangential!r}, 0)
 history = open("history.txt", "w")
 
 
 def record():
     a, b = O.bodies[0].state, O.bodies[1].state
-    history.write("%d %r %r %r\\n" % (O.iter, (b.pos - a.pos).norm()
-                                      - {2 * radius!r}, a.vel[0], b.vel[0]))
+    history.write("%d %r %r %r %r %r\\n" % (O.iter, (b.pos - a.pos).norm()
+                                            - {2 * radius!r}, a.vel[0],
+                                            b.vel[0], a.vel[1],
+                                            a.angVel[2]))
 
 
 O.engines = [ForceResetter(),
@@ -137,10 +145,12 @@ history.close()
 """
 
 
-def input_script(code, snippet, radius, density, speed, dt, steps, gap):
-    """The complete input script; fix print writes 'step gap v1x v2x'."""
+def input_script(code, snippet, radius, density, speed, tangential, dt,
+                 steps, gap):
+    """The complete input script; fix print writes
+    'step gap v1x v2x v1y omega1z'."""
     if code == "yade":
-        return yade_script(snippet, radius, speed, dt, steps, gap)
+        return yade_script(snippet, radius, speed, tangential, dt, steps, gap)
     half = 4.0 * radius
     x = radius + 0.5 * gap
     if code == "liggghts":
@@ -162,8 +172,8 @@ neighbor {0.1 * radius!r} bin
 neigh_modify delay 0 every 1 check yes
 create_atoms 1 single {-x!r} 0 0 units box
 create_atoms 1 single {x!r} 0 0 units box
-set atom 1 diameter {2 * radius!r} density {density!r} vx {speed!r}
-set atom 2 diameter {2 * radius!r} density {density!r} vx {-speed!r}
+set atom 1 diameter {2 * radius!r} density {density!r} vx {speed!r} vy {-tangential!r}
+set atom 2 diameter {2 * radius!r} density {density!r} vx {-speed!r} vy {tangential!r}
 {hard}
 # ---- contact model (snippet) ----
 {snippet.strip()}
@@ -175,14 +185,19 @@ variable s equal step
 variable g equal sqrt((x[2]-x[1])^2+(y[2]-y[1])^2+(z[2]-z[1])^2)-{2 * radius!r}
 variable v1 equal vx[1]
 variable v2 equal vx[2]
-fix hist all print 1 "${{s}} ${{g}} ${{v1}} ${{v2}}" file history.txt screen no
+variable t1 equal vy[1]
+compute spin all property/atom omegaz
+variable w1 equal c_spin[1]
+fix hist all print 1 "${{s}} ${{g}} ${{v1}} ${{v2}} ${{t1}} ${{w1}}" file history.txt screen no
 thermo {steps}
 run {steps}
 """
 
 
-def analyse(path, dt):
-    """(epsilon, contact_time) from the fix print history."""
+def analyse(path, dt, radius=1.0):
+    """(epsilon, contact_time) from the fix print history, and the
+    tangential outcome of sphere 1 (oblique()'s dictionary without
+    epsilon and contact_time)."""
     rows = [[float(w) for w in line.split()] for line in open(path)
             if line.strip() and not line.startswith("#")]
     if len(rows) < 3:
@@ -206,11 +221,42 @@ def analyse(path, dt):
     contact_time = crossing(last + 1, last) - crossing(first - 1, first)
     before = rows[0][2] - rows[0][3]
     after = rows[-1][2] - rows[-1][3]
-    return -after / before, contact_time
+    # Sphere 1 in the wall's frame: normal n = -x, tangent t = e_z x n = -y,
+    # spin counterclockwise about e_z.
+    v_n, v_n1 = rows[0][2], -rows[-1][2]
+    v_t, v_t1, spin1 = -rows[0][4], -rows[-1][4], rows[-1][5]
+    tangential = {"rebound_angle": math.degrees(math.atan2(v_t1, v_n1)),
+                  "spin": spin1 * radius / v_n}
+    if v_t != 0.0:
+        tangential["tangential_restitution"] = v_t1 / v_t
+        tangential["contact_point_restitution"] = -(v_t1 - spin1 * radius) / v_t
+    return -after / before, contact_time, tangential
 
 
 def collide(code, snippet_text, radius, density, speed, work_dir=None):
-    """Run one collision; returns (epsilon, contact_time)."""
+    """Run one head-on collision; returns (epsilon, contact_time)."""
+    return run(code, snippet_text, radius, density, speed, 0.0, work_dir)[:2]
+
+
+def oblique(code, snippet_text, radius, density, speed, angle,
+            work_dir=None):
+    """Run one oblique collision at the angle of incidence @p angle (degrees;
+    each sphere's speed @p speed, its normal part speed cos(angle), no spin);
+    returns a dictionary of sphere 1's outcome, as on a wall: epsilon,
+    contact_time, tangential_restitution (v_t'/v_t), spin (R omega'/v_n,
+    counterclockwise with the contact point's velocity v_t - omega R),
+    contact_point_restitution (-v_cp'/v_cp) and rebound_angle (degrees)."""
+    v_n = speed * math.cos(math.radians(angle))
+    v_t = speed * math.sin(math.radians(angle))
+    eps, tc, tangential = run(code, snippet_text, radius, density, v_n, v_t,
+                              work_dir)
+    return dict(tangential, epsilon=eps, contact_time=tc)
+
+
+def run(code, snippet_text, radius, density, speed, tangential,
+        work_dir=None):
+    """Run one collision, normal speed @p speed and tangential speed
+    @p tangential of each sphere; returns analyse()'s triple."""
     if code not in BINARY:
         raise DEMError("unknown code %r (liggghts, lammps or yade)" % code)
     exe = shutil.which(BINARY[code])
@@ -219,18 +265,19 @@ def collide(code, snippet_text, radius, density, speed, work_dir=None):
                        "dem_check_deps.sh installs it)" % (code, BINARY[code]))
     if work_dir is None:  # a temporary directory, kept if the run fails
         tmp = tempfile.mkdtemp(prefix="dem_collision_")
-        result = collide(code, snippet_text, radius, density, speed, tmp)
+        result = run(code, snippet_text, radius, density, speed, tangential,
+                     tmp)
         shutil.rmtree(tmp)
         return result
     dt = time_step(code, snippet_text, radius, density, speed)
     steps = PRE_STEPS + RUN_CONTACTS * STEPS_PER_CONTACT
     gap = 2.0 * speed * PRE_STEPS * dt
-    run_dir = os.path.join(work_dir, "%s_v%r" % (code, speed))
+    run_dir = os.path.join(work_dir, "%s_v%r_t%r" % (code, speed, tangential))
     os.makedirs(run_dir, exist_ok=True)
     script = "collision.py" if code == "yade" else "in.collision"
     with open(os.path.join(run_dir, script), "w") as f:
-        f.write(input_script(code, snippet_text, radius, density, speed, dt,
-                             steps, gap))
+        f.write(input_script(code, snippet_text, radius, density, speed,
+                             tangential, dt, steps, gap))
     history = os.path.join(run_dir, "history.txt")
     if os.path.exists(history):
         os.remove(history)
@@ -245,7 +292,7 @@ def collide(code, snippet_text, radius, density, speed, work_dir=None):
         raise DEMError("%s run failed (exit status %d), log %s:"
                        % (code, rc, log), tail)
     try:
-        return analyse(history, dt)
+        return analyse(history, dt, radius)
     except DEMError as e:
         raise DEMError("%s (%s)" % (e, run_dir), tail)
 

@@ -124,36 +124,40 @@ namespace DiskImpact
                         "2: the disk in a plane model, or the sphere's "
                         "meridian (axisymmetric). 3: the body itself in "
                         "three dimensions, for the tasks 'modal analysis', "
-                        "'impact' and 'impact convergence': the sphere "
-                        "('Domain' full or quarter sphere) or the disk of "
-                        "'Thickness' H ('Domain' full or half disk, the "
-                        "half also halved in thickness); the built-in mesh "
-                        "only (no 'Mesh file' or 'Contact refinements').");
+                        "'impact', 'impact convergence' and 'sweep': the "
+                        "sphere ('Domain' full, half or quarter sphere) or "
+                        "the disk of 'Thickness' H ('Domain' full or half "
+                        "disk, the half also halved in thickness); the "
+                        "built-in mesh only (no 'Mesh file' or 'Contact "
+                        "refinements').");
       prm.declare_entry("Radius",
                         "1",
                         Patterns::Double(),
                         "Disk radius R [length]. Must be positive. The disk's "
                         "centre is at (R, 0): it touches the plane x = 0 at "
                         "the origin.");
-      prm.declare_entry("Domain",
-                        "",
-                        Patterns::Selection(
-                          "|full disk|half disk|full sphere|quarter sphere"),
-                        "Disks: 'half disk' (y >= 0, symmetric about "
-                        "the impact axis y = 0: exact for a head-on impact; "
-                        "only modes even about the axis) or 'full disk'. "
-                        "Empty: 'full disk' for the tasks 'modal analysis' "
-                        "and 'modal convergence', 'half disk' for the "
-                        "others; a disk in 3D's half is also halved in "
-                        "thickness (0 <= z <= H/2, symmetric about z = 0: "
-                        "its modes are the in-plane ones even about y = 0). "
-                        "The sphere in 3D: 'quarter sphere' (y >= 0, "
-                        "z >= 0, symmetric about the planes y = 0 and z = 0: "
-                        "exact for a head-on impact) or 'full sphere'; "
-                        "empty: the full sphere for the modal tasks, the "
-                        "quarter for the others (a modal analysis takes "
-                        "the full sphere). Must be empty for a "
-                        "sphere in 2D, whose domain is its meridian.");
+      prm.declare_entry(
+        "Domain",
+        "",
+        Patterns::Selection(
+          "|full disk|half disk|full sphere|half sphere|quarter sphere"),
+        "Disks: 'half disk' (y >= 0, symmetric about "
+        "the impact axis y = 0: exact for a head-on impact; "
+        "only modes even about the axis) or 'full disk'. "
+        "Empty: 'full disk' for the tasks 'modal analysis' "
+        "and 'modal convergence', 'half disk' for the "
+        "others; a disk in 3D's half is also halved in "
+        "thickness (0 <= z <= H/2, symmetric about z = 0: "
+        "its modes are the in-plane ones even about y = 0). "
+        "The sphere in 3D: 'quarter sphere' (y >= 0, "
+        "z >= 0, symmetric about the planes y = 0 and z = 0: "
+        "exact for a head-on impact), 'half sphere' (z >= 0, "
+        "symmetric about the plane of incidence z = 0: "
+        "exact for an oblique impact) or 'full sphere'; "
+        "empty: the full sphere for the modal tasks, the "
+        "quarter for the others (a modal analysis takes "
+        "the full sphere). Must be empty for a "
+        "sphere in 2D, whose domain is its meridian.");
       prm.declare_entry("Thickness",
                         "1",
                         Patterns::Double(),
@@ -202,6 +206,10 @@ namespace DiskImpact
     symmetry_boundary = domain == "half disk" || domain == "quarter sphere" ||
                         (domain.empty() && half_disk_by_default) ||
                         (space_dimension == 2 && body_kind == Body::sphere);
+    // The half sphere ends on the plane z = 0 only.
+    symmetry_plane_z =
+      space_dimension == 3 && (domain == "half sphere" ||
+                               (symmetry_boundary && domain != "full sphere"));
     mesh_file             = prm.get("Mesh file");
     n_global_refinements  = prm.get_integer("Global refinements");
     n_contact_refinements = prm.get_integer("Contact refinements");
@@ -214,7 +222,8 @@ namespace DiskImpact
                domain.find("sphere") != std::string::npos),
             "Geometry: 'Domain = " + domain +
               "' is a disk entry; a sphere's domain is its meridian in 2D "
-              "(remove 'Domain'), 'full sphere' or 'quarter sphere' in 3D");
+              "(remove 'Domain'), 'full sphere', 'half sphere' or 'quarter "
+              "sphere' in 3D");
     require(body_kind == Body::sphere ||
               domain.find("sphere") == std::string::npos,
             "Geometry: 'Domain = " + domain + "' is a sphere's entry");
@@ -272,15 +281,30 @@ namespace DiskImpact
     return symmetry_boundary;
   }
 
+  bool
+  BodyGeometry::turns_in_plane() const
+  {
+    if (symmetry_boundary)
+      return false;
+    return space_dimension == 2 ? body_kind == Body::disk :
+                                  body_kind == Body::sphere;
+  }
+
+  bool
+  BodyGeometry::has_symmetry_plane_z() const
+  {
+    return symmetry_plane_z;
+  }
+
   double
   BodyGeometry::domain_share() const
   {
     if (space_dimension == 3 && body_kind == Body::disk)
       return symmetry_boundary ? 0.25 * disk_thickness : disk_thickness;
+    if (space_dimension == 3)
+      return (symmetry_boundary ? 0.5 : 1.) * (symmetry_plane_z ? 0.5 : 1.);
     if (!symmetry_boundary)
       return 1.;
-    if (space_dimension == 3)
-      return 0.25;
     return body_kind == Body::sphere ? 1. : 0.5;
   }
 
@@ -344,7 +368,9 @@ namespace DiskImpact
              (held_faces ? "held (u_z = 0)" : "free") + ", built-in mesh, " +
              std::to_string(n_global_refinements) + " global refinements";
     if (space_dimension == 3)
-      return std::string(symmetry_boundary ? "quarter sphere" : "sphere") +
+      return std::string(symmetry_boundary ? "quarter sphere" :
+                         symmetry_plane_z  ? "half sphere" :
+                                             "sphere") +
              " in 3D, R = " + std::to_string(body_radius) +
              ", built-in mesh, " + std::to_string(n_global_refinements) +
              " global refinements";

@@ -146,10 +146,20 @@ namespace DiskImpact
     /// y >= 0, z >= 0 (also BoundaryIds::symmetry_z, u_z = 0 on z = 0).
     bool
     has_symmetry_boundary() const;
+    /// Whether the model can move along the wall and turn about e_z: the
+    /// whole disk in two dimensions, the whole or half sphere in three
+    /// (whose plane of incidence is z = 0).
+    bool
+    turns_in_plane() const;
+    /// In 3D, whether the domain is z >= 0 only and ends on the plane z = 0
+    /// (boundary id BoundaryIds::symmetry_z, u_z = 0 there): the quarter
+    /// and the half sphere, the quarter of a disk.
+    bool
+    has_symmetry_plane_z() const;
     /// The share of the body's loads the computed domain carries: 1/2 for
-    /// a half disk, 1/4 for a quarter sphere, 1 for a full disk or a
-    /// sphere (whose meridian's integrals are over the whole sphere). A
-    /// disk's loads are per unit thickness: a disk of thickness H in 3D
+    /// a half disk or a half sphere, 1/4 for a quarter sphere, 1 for a full
+    /// disk or a sphere (whose meridian's integrals are over the whole sphere).
+    /// A disk's loads are per unit thickness: a disk of thickness H in 3D
     /// carries H (H/4 its quarter).
     double
     domain_share() const;
@@ -224,6 +234,7 @@ namespace DiskImpact
     bool         held_faces        = false;
     double       body_radius       = 1.;
     bool         symmetry_boundary = false;
+    bool         symmetry_plane_z  = false;
     std::string  mesh_file;
     unsigned int n_global_refinements  = 3;
     unsigned int n_contact_refinements = 0;

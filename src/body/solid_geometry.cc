@@ -20,21 +20,24 @@ namespace DiskImpact
     constexpr types::manifold_id transfinite_manifold_id = 3;
 
     /**
-     * The quarter y >= 0, z >= 0 of the balanced ball: its cells lie
-     * within one octant each. The surface gets a spherical manifold, the
-     * cells next to it (with their planar faces) a transfinite
-     * interpolation of it, as the whole ball has.
+     * The part y >= 0 (if @p cut_y), z >= 0 (if @p cut_z) of the balanced
+     * ball: its cells lie within one octant each. The surface gets a
+     * spherical manifold, the cells next to it (with their planar faces) a
+     * transfinite interpolation of it, as the whole ball has.
      */
     void
-    create_quarter_ball(const Point<3>   &center,
-                        const double      R,
-                        Triangulation<3> &triangulation)
+    create_ball_part(const Point<3>   &center,
+                     const double      R,
+                     const bool        cut_y,
+                     const bool        cut_z,
+                     Triangulation<3> &triangulation)
     {
       Triangulation<3> ball;
       GridGenerator::hyper_ball_balanced(ball, center, R);
       std::set<Triangulation<3>::active_cell_iterator> outside;
       for (const auto &cell : ball.active_cell_iterators())
-        if (cell->center()[1] < 0. || cell->center()[2] < 0.)
+        if ((cut_y && cell->center()[1] < 0.) ||
+            (cut_z && cell->center()[2] < 0.))
           outside.insert(cell);
       GridGenerator::create_triangulation_with_removed_cells(ball,
                                                              outside,
@@ -49,14 +52,15 @@ namespace DiskImpact
       triangulation.set_all_manifold_ids(numbers::flat_manifold_id);
       for (const auto &cell : triangulation.active_cell_iterators())
         for (const auto &face : cell->face_iterators())
-          if (face->at_boundary() && !on_plane(face, 1) && !on_plane(face, 2))
+          if (face->at_boundary() && !(cut_y && on_plane(face, 1)) &&
+              !(cut_z && on_plane(face, 2)))
             cell->set_all_manifold_ids(transfinite_manifold_id);
       for (const auto &face : triangulation.active_face_iterators())
         if (face->at_boundary())
           {
-            if (on_plane(face, 1))
+            if (cut_y && on_plane(face, 1))
               face->set_boundary_id(BoundaryIds::symmetry);
-            else if (on_plane(face, 2))
+            else if (cut_z && on_plane(face, 2))
               face->set_boundary_id(BoundaryIds::symmetry_z);
             else
               {
@@ -145,8 +149,9 @@ namespace DiskImpact
     const Point<3> center(R, 0., 0.);
     if (geometry.body() == Body::disk)
       create_thick_disk(geometry, triangulation);
-    else if (geometry.has_symmetry_boundary())
-      create_quarter_ball(center, R, triangulation);
+    else if (geometry.has_symmetry_plane_z())
+      create_ball_part(
+        center, R, geometry.has_symmetry_boundary(), true, triangulation);
     else
       {
         GridGenerator::hyper_ball_balanced(triangulation, center, R);

@@ -12,10 +12,12 @@ namespace DiskImpact
   /**
    * The body of subsection Geometry in three dimensions ('Dimension = 3'),
    * centred on (R, 0, 0), touching the plane x = 0 at the origin as the
-   * two-dimensional bodies do; whole, or the quarter y >= 0, z >= 0
-   * (has_symmetry_boundary(), boundary ids BoundaryIds::symmetry and
-   * symmetry_z on its planes).
-   * - The sphere: deal.II's balanced ball (32 cells, 8 in the quarter) with
+   * two-dimensional bodies do; whole, the sphere's half z >= 0
+   * (has_symmetry_plane_z(), boundary id BoundaryIds::symmetry_z on its
+   * plane), or the quarter y >= 0, z >= 0 (also has_symmetry_boundary(),
+   * BoundaryIds::symmetry on y = 0).
+   * - The sphere: deal.II's balanced ball (32 cells, 16 in the half, 8 in
+   *   the quarter) with
    *   the surface as a spherical manifold and a transfinite interpolation
    *   in the cells next to it.
    * - The disk of thickness H about the z axis through the centre: the

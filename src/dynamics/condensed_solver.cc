@@ -277,6 +277,38 @@ namespace DiskImpact
             residual(trial, false);
             decreased = h.l2_norm() < norm2;
           }
+        // At a kink of the return mapping the Newton direction need not
+        // descend at all: then Levenberg-Marquardt steps
+        // (J^T J + lambda I) d = J^T h, lambda growing until |h| falls,
+        // which turn toward the residual's steepest descent.
+        if (!decreased)
+          {
+            residual(u_C, false);
+            const Vector<double> h0(h);
+            FullMatrix<double>   normal(n, n);
+            jacobian.Tmmult(normal, jacobian);
+            Vector<double> gradient(n);
+            jacobian.Tvmult(gradient, h0);
+            double scale = 0.;
+            for (unsigned int i = 0; i < n; ++i)
+              scale = std::max(scale, normal(i, i));
+            for (double lambda = 1e-8 * scale;
+                 lambda <= 1e8 * scale && !decreased;
+                 lambda *= 10.)
+              {
+                LAPACKFullMatrix<double> damped(n, n);
+                damped = normal;
+                for (unsigned int i = 0; i < n; ++i)
+                  damped(i, i) += lambda;
+                damped.compute_lu_factorization();
+                step = gradient;
+                damped.solve(step);
+                trial = u_C;
+                trial -= step;
+                residual(trial, false);
+                decreased = h.l2_norm() < norm2;
+              }
+          }
         if (!decreased)
           return false;
         u_C  = trial;

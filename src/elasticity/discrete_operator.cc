@@ -1,7 +1,15 @@
 #include "elasticity/discrete_operator.h"
 
+#include <deal.II/base/function_lib.h>
+
 #include <deal.II/dofs/dof_renumbering.h>
 #include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/fe/mapping_q_cache.h>
+
+#include <deal.II/lac/la_parallel_vector.h>
+
+#include <deal.II/numerics/vector_tools.h>
 
 namespace DiskImpact
 {
@@ -37,6 +45,28 @@ namespace DiskImpact
       DoFRenumbering::support_point_wise(dof_handler);
     owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, relevant_dofs);
+  }
+
+  template <int dim>
+  void
+  DiscreteOperator<dim>::conform_mapping_to_constraints(
+    const AffineConstraints<double> &hanging)
+  {
+    if constexpr (dim == 3)
+      {
+        LinearAlgebra::distributed::Vector<double> positions(
+          owned_dofs, relevant_dofs, dof_handler.get_communicator());
+        VectorTools::interpolate(*mapping,
+                                 dof_handler,
+                                 Functions::IdentityFunction<dim>(),
+                                 positions);
+        positions.update_ghost_values();
+        hanging.distribute(positions);
+        positions.update_ghost_values();
+        auto conforming = std::make_unique<MappingQCache<dim>>(fe_degree);
+        conforming->initialize(*mapping, dof_handler, positions, false);
+        mapping = std::move(conforming);
+      }
   }
 
   template <int dim>

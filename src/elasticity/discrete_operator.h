@@ -73,6 +73,20 @@ namespace DiskImpact
       const dealii::parallel::distributed::Triangulation<dim> &triangulation,
       const dealii::FiniteElement<dim>                        &fe);
 
+    /**
+     * In 3D: the mapping replaced by the positions of the element's own
+     * nodes with the hanging-node constraints @p hanging applied. A refined
+     * cell places its nodes on the manifold, its coarser neighbour's face
+     * interpolates them, and the two disagree on curved faces; with the
+     * constrained positions they agree, so every linear field (a rigid
+     * rotation) is a constrained field of the elements, and the stiffness
+     * conserves angular momentum exactly. In 2D hanging nodes lie on
+     * straight interior edges, where the two agree already.
+     */
+    void
+    conform_mapping_to_constraints(
+      const dealii::AffineConstraints<double> &hanging);
+
     const unsigned int                       fe_degree;
     std::unique_ptr<dealii::MappingQ<dim>>   mapping;
     dealii::DoFHandler<dim>                  dof_handler;

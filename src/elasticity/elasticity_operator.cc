@@ -86,10 +86,16 @@ namespace DiskImpact
     constraints.clear();
     constraints.reinit(relevant_dofs);
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
-    // The symmetry conditions u_y = 0 on y = 0 and, on a quarter sphere,
-    // u_z = 0 on z = 0.
-    if (geometry.has_symmetry_boundary())
-      for (unsigned int d = 1; d < dim; ++d)
+    {
+      AffineConstraints<double> hanging(constraints);
+      hanging.close();
+      this->conform_mapping_to_constraints(hanging);
+    }
+    // The symmetry conditions u_y = 0 on y = 0 and, in 3D, u_z = 0 on
+    // z = 0.
+    for (unsigned int d = 1; d < dim; ++d)
+      if (d == 1 ? geometry.has_symmetry_boundary() :
+                   geometry.has_symmetry_plane_z())
         {
           std::vector<bool> component(dim, false);
           component[d] = true;

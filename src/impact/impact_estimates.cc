@@ -99,14 +99,15 @@ namespace DiskImpact
     const double c     = parameters.material.velocity_unit();
     const auto  &im    = parameters.impact;
     const double slide = std::abs(im.tangential_velocity() - im.spin());
-    // Friction changes omega R by at most 2 mu v_n (1 + epsilon), and by
+    // Friction changes omega R by at most mu v_n (1 + epsilon) / k, and by
     // at most 2 |v_t - omega0 R| / (1 + k) if the contact point stops and
-    // reverses (k = 1/2).
+    // reverses (k = I / (m R^2): 1/2 a disk, 2/5 a sphere).
+    const double k = parameters.geometry.is_sphere() ? 0.4 : 0.5;
     const double spin_rate =
       (std::abs(im.spin()) +
-       std::min(4. * parameters.contact.friction_coefficient() *
+       std::min(2. / k * parameters.contact.friction_coefficient() *
                   im.normal_velocity(),
-                4. / 3. * slide)) *
+                2. / (1. + k) * slide)) *
       c / R;
     return spin_rate == 0. ?
              0. :

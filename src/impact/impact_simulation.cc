@@ -232,12 +232,11 @@ namespace DiskImpact
           parameters.impact.n_projected_modes());
     const RigidWall<dim> wall = parameters.contact.wall<dim>();
     const double         mu   = parameters.contact.friction_coefficient();
-    // A whole disk: its tangential motion and spin; a rotation of the body
-    // (friction, an initial spin) is taken exactly by the contact, about
-    // the discrete body's centre of mass (the disk's centre up to the
-    // discretization).
-    tracks_rotation = dim == 2 && !geometry.is_sphere() &&
-                      !geometry.has_symmetry_boundary() && !pair;
+    // A whole disk, a whole or half sphere: its tangential motion and spin;
+    // a rotation of the body (friction, an initial spin) is taken exactly
+    // by the contact, about the discrete body's centre of mass (the body's
+    // centre up to the discretization).
+    tracks_rotation = geometry.turns_in_plane() && !pair;
     const bool turning =
       tracks_rotation && (mu > 0. || parameters.impact.spin() != 0.);
     rotation_center = turning ? center_of_mass() :
@@ -310,7 +309,8 @@ namespace DiskImpact
   ImpactSimulation<dim>::center_of_mass() const
   {
     // x_com . e_d = (M e_d) . x / (M e_d) . e_d, the position field x
-    // interpolated exactly (it is linear).
+    // interpolated exactly (it is linear). The whole body's centre lies on
+    // the planes of symmetry of the computed part (z = 0 of a half sphere).
     auto position = op.create_vector(), along = op.create_vector();
     VectorTools::interpolate(op.get_mapping(),
                              op.get_dof_handler(),
@@ -326,7 +326,11 @@ namespace DiskImpact
                                  Functions::ConstantFunction<dim>(unit),
                                  along);
         const auto momentum = op.mass_functional(along);
-        center[d]           = (momentum * position) / (momentum * along);
+        const bool mirrored =
+          d == 1 ? parameters.geometry.has_symmetry_boundary() :
+          d == 2 ? parameters.geometry.has_symmetry_plane_z() :
+                   false;
+        center[d] = mirrored ? 0. : (momentum * position) / (momentum * along);
       }
     return center;
   }
@@ -614,11 +618,15 @@ namespace DiskImpact
           std::abs(body_mass * (v_com_final - v_com_initial) - impulse) /
           (body_mass * impact_speed);
         // The energy left in the body's vibration: all but its centre of
-        // mass's kinetic energy.
+        // mass's kinetic energy and, for a body that turns, the energy of
+        // its motion along the wall and of its spin.
+        const double v_t = mean_along_tangent(v), omega = mean_rotation(v);
         summary.vibration_fraction =
           (domain_factor * (quadratic_form(op.mass_matrix(), v) +
                             quadratic_form(op.stiffness_matrix(), u)) -
-           0.5 * body_mass * v_com_final * v_com_final) /
+           0.5 * body_mass * v_com_final * v_com_final -
+           0.5 * domain_factor *
+             (tangent_mass * v_t * v_t + inertia * omega * omega)) /
           energy_initial;
       }
     summary.newton_iterations     = stepper->n_newton_iterations();

@@ -27,6 +27,11 @@ namespace DiskImpact
          << ten_digits(2. * d.speed)
          << " m/s): epsilon = " << ten_digits(d.epsilon) << ", contact time "
          << ten_digits(d.contact_time) << " s.\n";
+    if (d.friction > 0.)
+      head << "# Coulomb friction coefficient mu = " << ten_digits(d.friction)
+           << " (diskimpact's 'Friction coefficient').\n";
+    const std::string                  mu      = ten_digits(d.friction);
+    const bool                         sliding = d.friction > 0.;
     std::map<std::string, std::string> files;
     files["liggghts.txt"] =
       head.str() +
@@ -44,9 +49,12 @@ namespace DiskImpact
       "\nfix m3 all property/global coefficientRestitution peratomtypepair "
       "1 " +
       ten_digits(d.liggghts_restitution) +
-      "\nfix m4 all property/global coefficientFriction peratomtypepair 1 "
-      "0.0\npair_style gran model hertz tangential history\n"
-      "pair_coeff * *\n";
+      "\nfix m4 all property/global coefficientFriction peratomtypepair 1 " +
+      mu + "\n" +
+      (sliding ? "# tangential history: Mindlin's no-slip stiffness 8 G* a, "
+                 "damped as the normal spring.\n" :
+                 "") +
+      "pair_style gran model hertz tangential history\npair_coeff * *\n";
     files["lammps.txt"] =
       head.str() +
       "# LAMMPS pair granular, Hertz with viscoelastic damping: Ramírez et "
@@ -54,29 +62,50 @@ namespace DiskImpact
       "law with the fitted A = " +
       ten_digits(d.A) +
       " s,\n# eta_n0 = 2 A E_eff / m_eff, the velocity dependence "
-      "included.\npair_style granular\npair_coeff * * hertz/material " +
+      "included.\n" +
+      (sliding ? "# tangential mindlin: k_t = 8 G_eff a from E and nu "
+                 "(NULL), damping x_gamma_t = 1 times the normal one, mu.\n" :
+                 "") +
+      "pair_style granular\npair_coeff * * hertz/material " +
       ten_digits(d.young) + " " + ten_digits(d.lammps_damping) + " " +
       ten_digits(d.poisson) +
-      " tangential linear_nohistory 0.0 0.0 damping viscoelastic\n";
+      (sliding ? " tangential mindlin NULL 1.0 " + mu :
+                 std::string(" tangential linear_nohistory 0.0 0.0")) +
+      " damping viscoelastic\n";
     files["yade.py"] =
       "# Yade, ViscElMat (linear spring-dashpot from contact time and "
       "restitution)\n" +
       head.str() +
       "# ViscElMat's force is never attractive: its epsilon exceeds en "
       "and its contact time differs\n# from tc. These en, tc give the "
-      "epsilon and contact time above, at every speed.\n"
-      "mat = O.materials.append(ViscElMat(en=" +
-      ten_digits(d.yade.epsilon) +
-      ", et=0., tc=" + ten_digits(d.yade.contact_time) +
-      ", density=" + ten_digits(d.density) + ", frictionAngle=0.))\n";
+      "epsilon and contact time above, at every speed.\n" +
+      std::string(sliding ?
+                    "# With friction: et = 1, an undamped tangential spring "
+                    "2/7 of the normal one (the same period).\n" :
+                    "") +
+      "mat = O.materials.append(ViscElMat(en=" + ten_digits(d.yade.epsilon) +
+      ", et=" + (sliding ? "1." : "0.") +
+      ", tc=" + ten_digits(d.yade.contact_time) +
+      ", density=" + ten_digits(d.density) +
+      ", frictionAngle=" + (sliding ? "atan(" + mu + ")" : std::string("0.")) +
+      "))\n";
     files["mercurydpm.txt"] =
       "// MercuryDPM, LinearViscoelasticSpecies (particle-wall; for two "
       "such particles use mass / 2)\n" +
       std::regex_replace(head.str(), std::regex("(^|\n)# "), "$1// ") +
+      (sliding ? "// LinearViscoelasticSlidingFrictionSpecies: the sliding "
+                 "spring and dashpot 2/7 of the normal ones (the same "
+                 "period).\n" :
+                 "") +
       "species.setDensity(" + ten_digits(d.density) +
       ");\nspecies.setCollisionTimeAndRestitutionCoefficient(" +
       ten_digits(d.contact_time) + ", " + ten_digits(d.epsilon) + ", " +
-      ten_digits(d.mass) + ");\n";
+      ten_digits(d.mass) + ");\n" +
+      (sliding ? "species.setSlidingFrictionCoefficient(" + mu +
+                   ");\nspecies.setSlidingStiffness(2. / 7. * "
+                   "species.getStiffness());\nspecies.setSlidingDissipation("
+                   "2. / 7. * species.getDissipation());\n" :
+                 "");
     files["lethe.prm"] =
       head.str() +
       "# Lethe (lethe-particles), subsection lagrangian physical "
@@ -87,7 +116,7 @@ namespace DiskImpact
       "\nset young modulus particles           = " + ten_digits(d.young) +
       "\nset poisson ratio particles           = " + ten_digits(d.poisson) +
       "\nset restitution coefficient particles = " + ten_digits(d.epsilon) +
-      "\n";
+      "\nset friction coefficient particles    = " + mu + "\n";
     return files;
   }
 } // namespace DiskImpact

@@ -107,13 +107,15 @@ namespace DiskImpact
     material.parse_parameters(prm);
     require(geometry.dimension() == 2 || task().traits.three_dimensional,
             "Geometry: 'Dimension = 3' is computed by the tasks 'modal "
-            "analysis', 'impact' and 'impact convergence' so far; task '" +
+            "analysis', 'impact', 'impact convergence' and 'sweep' so far; "
+            "task '" +
               run.task + "' takes 'Dimension = 2'");
-    require(geometry.dimension() == 2 || !geometry.has_symmetry_boundary() ||
+    require(geometry.dimension() == 2 || !geometry.has_symmetry_plane_z() ||
               !task().traits.modal || geometry.body() == Body::disk,
-            "Geometry: a quarter sphere holds only the modes symmetric "
-            "about its two planes, which are not whole multiplets; a modal "
-            "analysis of the sphere in 3D takes 'Domain = full sphere'");
+            "Geometry: a quarter or half sphere holds only the modes "
+            "symmetric about its planes, which are not whole multiplets; a "
+            "modal analysis of the sphere in 3D takes 'Domain = full "
+            "sphere'");
     if (geometry.body() == Body::sphere)
       {
         require(!material.plane_model_given(),
@@ -199,11 +201,12 @@ namespace DiskImpact
       contact.check_wall(geometry, 0.05);
     impact.check_velocities(partner.is_body() ? 1. : 0.5);
     require(!impact.is_oblique() ||
-              (geometry.dimension() == 2 && !geometry.is_sphere() &&
-               !geometry.has_symmetry_boundary() && !partner.is_body()),
+              (geometry.turns_in_plane() && !partner.is_body()),
             "Impact: an oblique impact ('Angle of incidence' or 'Spin' not "
             "0) is computed for the whole disk in two dimensions (Domain = "
-            "full disk, Dimension = 2) against the wall so far");
+            "full disk, Dimension = 2) or the sphere in three (Domain = "
+            "half sphere or full sphere, Dimension = 3) against the wall so "
+            "far");
     require(contact.friction_coefficient() == 0. || !partner.is_body(),
             "Contact: 'Friction coefficient' > 0 acts on the wall; a "
             "partner body's contact is frictionless so far");

@@ -232,6 +232,7 @@ namespace DiskImpact
           d.lammps_damping = Reference::lammps_viscoelastic_damping(
             d.A, d.young / (1. - d.poisson * d.poisson), d.mass);
           d.yade = Reference::yade_viscel_inputs(d.epsilon, d.contact_time);
+          d.friction = parameters.contact.friction_coefficient();
           files  = dem_files(d);
           dem_json << "{\"reference_speed_si\": " << ten_digits(d.speed)
                    << ", \"epsilon\": " << ten_digits(d.epsilon)
@@ -243,6 +244,7 @@ namespace DiskImpact
                    << ten_digits(d.yade.contact_time)
                    << ", \"lammps_viscoelastic_eta_n0\": "
                    << ten_digits(d.lammps_damping)
+                   << ", \"friction_coefficient\": " << ten_digits(d.friction)
                    << ", \"dissipative_constant_si\": " << ten_digits(d.A)
                    << ", \"files\": [\"dem/liggghts.txt\", \"dem/lammps.txt\", "
                       "\"dem/yade.py\", \"dem/mercurydpm.txt\", "
@@ -348,7 +350,7 @@ namespace DiskImpact
                                                          communicator);
       };
       task.check              = check_sweep;
-      task.build_largest_mesh = build_fastest_mesh;
+      task.build_largest_mesh = build_fastest_mesh<2>;
       add_own_parameters<RestitutionLaw>(task);
       return task;
     }

@@ -679,9 +679,10 @@ namespace DiskImpact
               [&]() { parameters.material.with_relaxation_time(tau); });
   }
 
+  template <int dim>
   void
   build_fastest_mesh(const Parameters                          &parameters,
-                     Triangulation<2>                          &mesh,
+                     Triangulation<dim>                        &mesh,
                      const std::function<double(unsigned int)> &cell_budget)
   {
     in_context("Sweep: the fastest impact's finest mesh", [&]() {
@@ -704,6 +705,15 @@ namespace DiskImpact
     });
   }
 
+  template void
+  build_fastest_mesh(const Parameters &,
+                     Triangulation<2> &,
+                     const std::function<double(unsigned int)> &);
+  template void
+  build_fastest_mesh(const Parameters &,
+                     Triangulation<3> &,
+                     const std::function<double(unsigned int)> &);
+
   namespace
   {
     TaskEntry
@@ -718,10 +728,12 @@ namespace DiskImpact
       task.traits.sweeps            = true;
       task.traits.partner_body      = true;
       task.traits.one_mesh_per_rank = true;
+      task.traits.three_dimensional = true;
       task.result_files             = sweep_result_files();
       task.run                      = run_sweep;
       task.check                    = check_sweep;
-      task.build_largest_mesh       = build_fastest_mesh;
+      task.build_largest_mesh       = build_fastest_mesh<2>;
+      task.build_largest_solid_mesh = build_fastest_mesh<3>;
       return task;
     }
   } // namespace

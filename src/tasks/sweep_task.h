@@ -55,8 +55,9 @@ namespace DiskImpact
 
   /// The fastest impact's finest mesh (it needs the largest contact zone),
   /// within @p cell_budget(degree) cells.
+  template <int dim>
   void
   build_fastest_mesh(const Parameters                          &parameters,
-                     dealii::Triangulation<2>                  &mesh,
+                     dealii::Triangulation<dim>                &mesh,
                      const std::function<double(unsigned int)> &cell_budget);
 } // namespace DiskImpact

@@ -1,26 +1,33 @@
 #!/usr/bin/python3
-"""Oblique impacts of the elastic disk against rigid-body impulse theory.
+"""Oblique impacts of the elastic disk or sphere against rigid-body impulse theory.
 
 Runs task 'sweep' on 2 ranks over the angles of incidence --angles
-(degrees; 2.5 to 65 by default, 20 impacts) at the speed --speed (0.02c):
-the whole disk, plane stress, nu = 0.3, Q2, the mesh of
-tests/regression/impact_oblique_headon.prm, friction coefficient --mu.
+(degrees) at the speed --speed (0.02c), friction coefficient --mu (0.1):
+  --body disk:   the whole disk, plane stress, nu = 0.3, Q2, the mesh of
+                 tests/regression/impact_oblique_headon.prm; 20 angles from
+                 2.5 to 65 by default;
+  --body sphere: the half sphere in 3D, nu = 0.3, Q2, the mesh of
+                 tests/regression/impact_oblique_sphere.prm; 10 angles from
+                 5 to 65 by default.
 Prints a Markdown table with, per angle:
   v_n = speed cos(angle), the normal speed;
   psi1 = 2 v_cp / (mu (1 + eps) v_n), the contact point's normalised
-         incidence (gross sliding throughout for psi1 > 6 on a disk);
+         incidence (gross sliding throughout for psi1 > 2 (1 + 1/k), k =
+         I / (m R^2): 6 for the disk, 7 for the sphere);
   eps, the normal restitution;
   the centre of mass's tangential restitution e_t and the spin R omega'/v_n,
          the finite elements' beside rigid-body impulse theory's given eps
          (computed here, independently of diskimpact's own reference);
   the contact point's tangential restitution beta = -v_cp'/v_cp (theory:
-         -1 + 3 mu (1 + eps) v_n / v_cp while sliding, 0 where it stops);
+         -1 + (1 + 1/k) mu (1 + eps) v_n / v_cp while sliding, 0 where it
+         stops);
   psi2, the normalised rebound, and the friction work over E(0);
-and writes the rows to WORK/oblique_disk.csv; with --figure, psi2 against
+and writes the rows to WORK/oblique_<body>.csv; with --figure, psi2 against
 psi1 to that PNG. Its last line is the sweep's wall time.
 
-usage: bench/oblique_disk.py [--mu 0.1] [--speed 0.02] [--angles 2.5 5 ...]
-       [--work DIR] [--figure PNG] [--diskimpact build/diskimpact]
+usage: bench/oblique_sweep.py [--body disk|sphere] [--mu 0.1] [--speed 0.02]
+       [--angles 2.5 5 ...] [--work DIR] [--figure PNG]
+       [--diskimpact build/diskimpact]
 """
 import argparse
 import csv
@@ -31,16 +38,26 @@ import sys
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-BASE = os.path.join(HERE, "..", "tests", "regression",
-                    "impact_oblique_headon.prm")
-K = 0.5  # the disk's moment of inertia over m R^2
+REGRESSION = os.path.join(HERE, "..", "tests", "regression")
+# Per body: its base parameter file, k = I / (m R^2), the default angles and
+# the figure's title.
+BODIES = {
+    "disk": {"base": os.path.join(REGRESSION, "impact_oblique_headon.prm"),
+             "k": 0.5,
+             "angles": [2.5, 5, 7.5, 10, 12.5, 15, 17.5, 20, 22.5, 25, 27.5,
+                        30, 32.5, 35, 40, 45, 50, 55, 60, 65],
+             "title": "elastic disk"},
+    "sphere": {"base": os.path.join(REGRESSION, "impact_oblique_sphere.prm"),
+               "k": 0.4,
+               "angles": [5, 10, 15, 20, 25, 30, 35, 45, 55, 65],
+               "title": "elastic sphere (3D)"}}
 
 
-def sweep(diskimpact, work, mu, speed, angles):
+def sweep(diskimpact, work, body, mu, speed, angles):
     """The sweep on 2 ranks; its rows."""
-    prm = os.path.join(work, "oblique_disk.prm")
+    prm = os.path.join(work, f"oblique_{body}.prm")
     with open(prm, "w") as f:
-        f.write(f"include {os.path.abspath(BASE)}\n"
+        f.write(f"include {os.path.abspath(BODIES[body]['base'])}\n"
                 "set Task = sweep\n"
                 f"set Output directory = {os.path.abspath(work)}\n"
                 "subsection Contact\n"
@@ -62,32 +79,37 @@ def sweep(diskimpact, work, mu, speed, angles):
                  for k, v in r.items()} for r in csv.DictReader(f)]
 
 
-def rigid_body(mu, eps, vn, vt, spin):
-    """Rigid-body impulse theory: v_t', omega' R and v_cp' of the disk."""
+def rigid_body(k, mu, eps, vn, vt, spin):
+    """Rigid-body impulse theory: v_t', omega' R and v_cp' of a round body
+    of moment of inertia k m R^2."""
     vcp = vt - spin  # spin as omega R
-    jump = (1 + 1 / K) * mu * (1 + eps) * vn
+    jump = (1 + 1 / k) * mu * (1 + eps) * vn
     if jump < abs(vcp):  # slides throughout
         jt = -math.copysign(mu * (1 + eps) * vn, vcp)
     else:  # the contact point stops and stays stopped
-        jt = -vcp / (1 + 1 / K)
-    return vt + jt, spin - jt / K, vcp + (1 + 1 / K) * jt
+        jt = -vcp / (1 + 1 / k)
+    return vt + jt, spin - jt / k, vcp + (1 + 1 / k) * jt
 
 
 def main():
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("--body", choices=sorted(BODIES), default="disk")
     p.add_argument("--mu", type=float, default=0.1)
     p.add_argument("--speed", type=float, default=0.02)
-    p.add_argument("--angles", type=float, nargs="+",
-                   default=[2.5, 5, 7.5, 10, 12.5, 15, 17.5, 20, 22.5, 25,
-                            27.5, 30, 32.5, 35, 40, 45, 50, 55, 60, 65])
-    p.add_argument("--work", default="output/oblique_disk")
+    p.add_argument("--angles", type=float, nargs="+")
+    p.add_argument("--work")
     p.add_argument("--figure")
     p.add_argument("--diskimpact",
                    default=os.path.join(HERE, "..", "build", "diskimpact"))
     args = p.parse_args()
-    os.makedirs(args.work, exist_ok=True)
+    body = BODIES[args.body]
+    k = body["k"]
+    angles = args.angles or body["angles"]
+    work = args.work or os.path.join("output", f"oblique_{args.body}")
+    os.makedirs(work, exist_ok=True)
     start = time.time()
-    rows = sweep(args.diskimpact, args.work, args.mu, args.speed, args.angles)
+    rows = sweep(args.diskimpact, work, args.body, args.mu, args.speed,
+                 angles)
     wall = time.time() - start
 
     table = []
@@ -96,7 +118,7 @@ def main():
         vn = s["velocity"] * math.cos(math.radians(angle))
         vt = s["velocity"] * math.sin(math.radians(angle))
         eps = s["epsilon"]
-        vt1, spin1, vcp1 = rigid_body(args.mu, eps, vn, vt, 0.)
+        vt1, spin1, vcp1 = rigid_body(k, args.mu, eps, vn, vt, 0.)
         scale = 0.5 * args.mu * (1 + eps) * vn
         table.append({
             "angle": angle, "v_n": vn, "psi1": s["psi_incident"],
@@ -107,7 +129,7 @@ def main():
             "psi2": s["psi_rebound"], "psi2_rigid": vcp1 / scale,
             "friction_work": s["friction_work"],
             "energy_error": s["energy_error"]})
-    with open(os.path.join(args.work, "oblique_disk.csv"), "w",
+    with open(os.path.join(work, f"oblique_{args.body}.csv"), "w",
               newline="") as f:
         writer = csv.DictWriter(f, fieldnames=list(table[0]))
         writer.writeheader()
@@ -142,15 +164,15 @@ def main():
         ax.plot(psi1, [r["psi2_rigid"] for r in table], "k--",
                 label="rigid-body impulse theory")
         ax.axhline(0, color="grey", lw=0.5)
-        ax.axvline(2 * (1 + 1 / K), color="grey", lw=0.5, ls=":")
+        ax.axvline(2 * (1 + 1 / k), color="grey", lw=0.5, ls=":")
         ax.set_xlabel(r"$\psi_1 = 2 v_{cp} / (\mu (1 + \varepsilon) v_n)$")
         ax.set_ylabel(r"$\psi_2 = 2 v_{cp}' / (\mu (1 + \varepsilon) v_n)$")
-        ax.set_title(f"elastic disk, $\\nu$ = 0.3, $\\mu$ = {args.mu}, "
+        ax.set_title(f"{body['title']}, $\\nu$ = 0.3, $\\mu$ = {args.mu}, "
                      f"$v$ = {args.speed} c")
         ax.legend()
         fig.tight_layout()
         fig.savefig(args.figure, dpi=120)
-    print(f"{len(args.angles)} impacts in {wall:.1f} s (task 'sweep', "
+    print(f"{len(angles)} impacts in {wall:.1f} s (task 'sweep', "
           "2 ranks)")
 
 
