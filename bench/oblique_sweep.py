@@ -3,10 +3,10 @@
 
 Runs task 'sweep' on 2 ranks over the angles of incidence --angles
 (degrees) at the speed --speed (0.02c), friction coefficient --mu (0.1):
-  --body disk:   the whole disk, plane stress, nu = 0.3, Q2, the mesh of
+  --body disk:   the whole disk, plane stress, nu = --poisson (0.3), Q2, the mesh of
                  tests/regression/impact_oblique_headon.prm; 20 angles from
                  2.5 to 65 by default;
-  --body sphere: the half sphere in 3D, nu = 0.3, Q2, the mesh of
+  --body sphere: the half sphere in 3D, nu = --poisson, Q2, the mesh of
                  tests/regression/impact_oblique_sphere.prm; 10 angles from
                  5 to 65 by default.
 Prints a Markdown table with, per angle:
@@ -26,6 +26,7 @@ and writes the rows to WORK/oblique_<body>.csv; with --figure, psi2 against
 psi1 to that PNG. Its last line is the sweep's wall time.
 
 usage: bench/oblique_sweep.py [--body disk|sphere] [--mu 0.1] [--speed 0.02]
+       [--poisson 0.3]
        [--angles 2.5 5 ...] [--work DIR] [--figure PNG]
        [--diskimpact build/diskimpact]
 """
@@ -53,7 +54,7 @@ BODIES = {
                "title": "elastic sphere (3D)"}}
 
 
-def sweep(diskimpact, work, body, mu, speed, angles):
+def sweep(diskimpact, work, body, mu, speed, angles, poisson):
     """The sweep on 2 ranks; its rows."""
     prm = os.path.join(work, f"oblique_{body}.prm")
     with open(prm, "w") as f:
@@ -62,6 +63,9 @@ def sweep(diskimpact, work, body, mu, speed, angles):
                 f"set Output directory = {os.path.abspath(work)}\n"
                 "subsection Contact\n"
                 f"  set Friction coefficient = {mu}\n"
+                "end\n"
+                "subsection Material\n"
+                f"  set Poisson ratio = {poisson}\n"
                 "end\n"
                 "subsection Impact\n"
                 f"  set Velocities = {speed}\n"
@@ -96,6 +100,7 @@ def main():
     p.add_argument("--body", choices=sorted(BODIES), default="disk")
     p.add_argument("--mu", type=float, default=0.1)
     p.add_argument("--speed", type=float, default=0.02)
+    p.add_argument("--poisson", type=float, default=0.3)
     p.add_argument("--angles", type=float, nargs="+")
     p.add_argument("--work")
     p.add_argument("--figure")
@@ -109,7 +114,7 @@ def main():
     os.makedirs(work, exist_ok=True)
     start = time.time()
     rows = sweep(args.diskimpact, work, args.body, args.mu, args.speed,
-                 angles)
+                 angles, args.poisson)
     wall = time.time() - start
 
     table = []
@@ -167,7 +172,8 @@ def main():
         ax.axvline(2 * (1 + 1 / k), color="grey", lw=0.5, ls=":")
         ax.set_xlabel(r"$\psi_1 = 2 v_{cp} / (\mu (1 + \varepsilon) v_n)$")
         ax.set_ylabel(r"$\psi_2 = 2 v_{cp}' / (\mu (1 + \varepsilon) v_n)$")
-        ax.set_title(f"{body['title']}, $\\nu$ = 0.3, $\\mu$ = {args.mu}, "
+        ax.set_title(f"{body['title']}, $\\nu$ = {args.poisson}, "
+                     f"$\\mu$ = {args.mu}, "
                      f"$v$ = {args.speed} c")
         ax.legend()
         fig.tight_layout()

@@ -728,7 +728,28 @@ namespace DiskImpact
         " c fails the check '" + check + "': " + what);
     };
     const double eps = summary.epsilon;
-    if (!(eps >= 0. && eps <= 1. + 1e-6))
+    // With friction an oblique impact can turn energy of the motion along
+    // the wall into the normal rebound (epsilon > 1, as Kuninaka & Hayakawa
+    // found for elastic disks): then the body's rigid motion may at most
+    // keep the initial energy.
+    if (tracks_rotation && parameters.impact.is_oblique() &&
+        parameters.contact.friction_coefficient() > 0.)
+      {
+        const auto  &v   = stepper->velocity();
+        const double v_n = mean_along_normal(v), v_t = mean_along_tangent(v),
+                     omega = mean_rotation(v);
+        const double rigid =
+          0.5 * domain_factor *
+          (normal_mass * v_n * v_n + tangent_mass * v_t * v_t +
+           inertia * omega * omega);
+        if (!(eps >= 0. && rigid <= energy_initial * (1. + 1e-6)))
+          fail("0 <= epsilon, rigid motion's energy <= E(0)",
+               "epsilon = " + approximately(eps, 6) +
+                 ", the rigid motion keeps " +
+                 approximately(rigid / energy_initial, 6) +
+                 " of E(0): impossible for a passive body; " + likely_causes);
+      }
+    else if (!(eps >= 0. && eps <= 1. + 1e-6))
       fail("0 <= epsilon <= 1",
            "epsilon = " + approximately(eps, 6) +
              " is impossible for a passive body; " + likely_causes);
