@@ -41,10 +41,10 @@ namespace DiskImpact
   /**
    * How far the contact moves along the body's edge as the body turns
    * while in contact: R times the largest angle, the contact time times
-   * |omega0| plus the spin friction can add to a disk, at most
-   * min(4 mu v_n, 4/3 |v_t - omega0 R|) / R (epsilon <= 1; the contact
-   * point at most reversed). Zero for a head-on impact without friction
-   * and spin.
+   * |omega0| plus the spin friction can add, at most
+   * min(2 mu v_n / k, 2 |v_t - omega0 R| / (1 + k)) / R (epsilon <= 1; the
+   * contact point at most reversed; k = I / (m R^2), 1/2 a disk, 2/5 a
+   * sphere). Zero for a head-on impact without friction and spin.
    */
   double
   contact_drift(const Parameters &parameters);

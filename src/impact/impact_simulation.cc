@@ -305,6 +305,21 @@ namespace DiskImpact
   }
 
   template <int dim>
+  double
+  ImpactSimulation<dim>::rigid_motion_energy(
+    const PETScWrappers::MPI::Vector &v) const
+  {
+    // The normal, tangential and rotational parts are M-orthogonal (the
+    // rotation about the centre of mass); without rotation tracking the
+    // tangent mass and the inertia are 0.
+    const double v_n = mean_along_normal(v), v_t = mean_along_tangent(v),
+                 omega = mean_rotation(v);
+    return 0.5 * domain_factor *
+           (normal_mass * v_n * v_n + tangent_mass * v_t * v_t +
+            inertia * omega * omega);
+  }
+
+  template <int dim>
   dealii::Point<dim>
   ImpactSimulation<dim>::center_of_mass() const
   {
@@ -617,16 +632,12 @@ namespace DiskImpact
         summary.impulse_error =
           std::abs(body_mass * (v_com_final - v_com_initial) - impulse) /
           (body_mass * impact_speed);
-        // The energy left in the body's vibration: all but its centre of
-        // mass's kinetic energy and, for a body that turns, the energy of
-        // its motion along the wall and of its spin.
-        const double v_t = mean_along_tangent(v), omega = mean_rotation(v);
+        // The energy left in the body's vibration: all but the energy of
+        // its rigid motion.
         summary.vibration_fraction =
           (domain_factor * (quadratic_form(op.mass_matrix(), v) +
                             quadratic_form(op.stiffness_matrix(), u)) -
-           0.5 * body_mass * v_com_final * v_com_final -
-           0.5 * domain_factor *
-             (tangent_mass * v_t * v_t + inertia * omega * omega)) /
+           rigid_motion_energy(v)) /
           energy_initial;
       }
     summary.newton_iterations     = stepper->n_newton_iterations();
@@ -735,13 +746,7 @@ namespace DiskImpact
     if (tracks_rotation && parameters.impact.is_oblique() &&
         parameters.contact.friction_coefficient() > 0.)
       {
-        const auto  &v   = stepper->velocity();
-        const double v_n = mean_along_normal(v), v_t = mean_along_tangent(v),
-                     omega = mean_rotation(v);
-        const double rigid =
-          0.5 * domain_factor *
-          (normal_mass * v_n * v_n + tangent_mass * v_t * v_t +
-           inertia * omega * omega);
+        const double rigid = rigid_motion_energy(stepper->velocity());
         if (!(eps >= 0. && rigid <= energy_initial * (1. + 1e-6)))
           fail("0 <= epsilon, rigid motion's energy <= E(0)",
                "epsilon = " + approximately(eps, 6) +

@@ -103,6 +103,10 @@ namespace DiskImpact
     mean_along_tangent(const dealii::PETScWrappers::MPI::Vector &x) const;
     double
     mean_rotation(const dealii::PETScWrappers::MPI::Vector &x) const;
+    /// The kinetic energy of the body's rigid motion at the velocity @p v:
+    /// its centre of mass's and, for a body that turns, its spin's.
+    double
+    rigid_motion_energy(const dealii::PETScWrappers::MPI::Vector &v) const;
     /// The discrete body's centre of mass (x M-weighted).
     dealii::Point<dim>
     center_of_mass() const;

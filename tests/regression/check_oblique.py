@@ -65,6 +65,16 @@ def check(name, value, bound):
     print(f"{name}: {value:.3e} (bound {bound:g}) {'ok' if ok else 'FAIL'}")
 
 
+def check_slides_throughout():
+    """The contact point's tangential velocity keeps its sign."""
+    global failed
+    slides = s["v_contact_initial"] * s["v_contact_final"] > 0
+    failed |= not slides
+    print(f"contact point {s['v_contact_initial']:.6g} -> "
+          f"{s['v_contact_final']:.6g}: "
+          f"{'slides throughout' if slides else 'FAIL: it stopped sliding'}")
+
+
 if args.frictionless:
     h = read(args.frictionless[0])
     tol = float(args.frictionless[1])
@@ -81,11 +91,7 @@ if args.sliding is not None:
           f"{s['v_tangential_final']:.10f}, rigid-body sliding {rigid:.10f}")
     check("v_t - rigid-body sliding (/ v_n)",
           (s["v_tangential_final"] - rigid) / v_n, args.sliding)
-    slides = s["v_contact_initial"] * s["v_contact_final"] > 0
-    failed |= not slides
-    print(f"contact point {s['v_contact_initial']:.6g} -> "
-          f"{s['v_contact_final']:.6g}: "
-          f"{'slides throughout' if slides else 'FAIL: it stopped sliding'}")
+    check_slides_throughout()
 if args.tangential_restitution is not None:
     mu, eps = s["friction"], s["epsilon"]
     v_t = s["v_tangential_initial"]
@@ -94,11 +100,7 @@ if args.tangential_restitution is not None:
           f"rigid-body sliding {rigid:.8f}")
     check("e_t - rigid-body sliding", s["tangential_restitution"] - rigid,
           args.tangential_restitution)
-    slides = s["v_contact_initial"] * s["v_contact_final"] > 0
-    failed |= not slides
-    print(f"contact point {s['v_contact_initial']:.6g} -> "
-          f"{s['v_contact_final']:.6g}: "
-          f"{'slides throughout' if slides else 'FAIL: it stopped sliding'}")
+    check_slides_throughout()
 if args.spin_with_arm:
     with open(args.spin_with_arm[0], newline="") as f:
         rows = list(csv.DictReader(f))
