@@ -831,6 +831,12 @@ namespace DiskImpact
     return points[i].history;
   }
 
+  const PointHistory &
+  ContactZone::history(const unsigned int i) const
+  {
+    return points[i].history;
+  }
+
   std::vector<std::vector<std::pair<unsigned int, double>>>
   ContactZone::point_rows() const
   {

@@ -193,6 +193,8 @@ namespace DiskImpact
     /// Point @p i's history, to read and to update after a step.
     PointHistory &
     history(unsigned int i);
+    const PointHistory &
+    history(unsigned int i) const;
     /// Each point's gap row b: (position in D, b).
     std::vector<std::vector<std::pair<unsigned int, double>>>
     point_rows() const;

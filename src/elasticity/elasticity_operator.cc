@@ -4,6 +4,7 @@
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/tensor_function.h>
 
 #include <deal.II/dofs/dof_renumbering.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -473,6 +474,18 @@ namespace DiskImpact
     PETScWrappers::MPI::Vector &f,
     const types::material_id    body) const
   {
+    assemble_body_force(ConstantTensorFunction<1, dim>(force_per_area),
+                        f,
+                        body);
+  }
+
+  template <int dim>
+  void
+  ElasticityOperator<dim>::assemble_body_force(
+    const TensorFunction<1, dim> &force_per_area,
+    PETScWrappers::MPI::Vector   &f,
+    const types::material_id      body) const
+  {
     const QGauss<dim>                    quadrature(fe_degree + 1);
     FEValues<dim>                        fe_values(*mapping,
                             *fe,
@@ -490,11 +503,13 @@ namespace DiskImpact
           fe_values.reinit(cell);
           cell_f = 0.;
           for (const unsigned int q : fe_values.quadrature_point_indices())
-            for (unsigned int i = 0; i < dofs_per_cell; ++i)
-              cell_f(i) += force_per_area *
-                           fe_values[displacement].value(i, q) *
-                           fe_values.JxW(q) *
-                           section.measure(fe_values.quadrature_point(q));
+            {
+              const Point<dim>    &x     = fe_values.quadrature_point(q);
+              const Tensor<1, dim> force = force_per_area.value(x);
+              for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                cell_f(i) += force * fe_values[displacement].value(i, q) *
+                             fe_values.JxW(q) * section.measure(x);
+            }
           cell->get_dof_indices(dof_indices);
           constraints.distribute_local_to_global(cell_f, dof_indices, f);
         }

@@ -7,6 +7,7 @@
 
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/tensor_function.h>
 
 #include <deal.II/distributed/tria.h>
 
@@ -118,6 +119,13 @@ namespace DiskImpact
     assemble_body_force(const dealii::Tensor<1, dim>       &force_per_area,
                         dealii::PETScWrappers::MPI::Vector &f,
                         dealii::types::material_id          body =
+                          dealii::numbers::invalid_material_id) const;
+
+    /// The same for a body force that varies in space.
+    void
+    assemble_body_force(const dealii::TensorFunction<1, dim> &force_per_area,
+                        dealii::PETScWrappers::MPI::Vector   &f,
+                        dealii::types::material_id            body =
                           dealii::numbers::invalid_material_id) const;
 
     /// The volume (area for a disk of unit thickness) of the cells of

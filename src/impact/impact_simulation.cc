@@ -2,6 +2,7 @@
 
 #include "base/peak_memory.h"
 #include "base/run_error.h"
+#include "elasticity/rotation_field.h"
 #include "impact/impact_estimates.h"
 #include "output/atomic_file.h"
 #include "output/hdf5_output.h"
@@ -25,29 +26,6 @@ namespace DiskImpact
 
   namespace
   {
-    /// The rigid rotation e_z x (x - c) about the centre @p c.
-    template <int dim>
-    class RotationField : public Function<dim>
-    {
-    public:
-      explicit RotationField(const dealii::Point<dim> &center)
-          : Function<dim>(dim)
-          , center(center)
-      {}
-
-      double
-      value(const dealii::Point<dim> &x,
-            const unsigned int        component) const override
-      {
-        return component == 0 ? -(x[1] - center[1]) :
-               component == 1 ? x[0] - center[0] :
-                                0.;
-      }
-
-    private:
-      const dealii::Point<dim> center;
-    };
-
     /// What makes an impact's result unphysical, for the messages.
     const std::string likely_causes =
       "the body is far too stiff or too soft: volumetric locking (a Poisson "
