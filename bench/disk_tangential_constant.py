@@ -56,8 +56,8 @@ def fields(X, Y, nu, E=1.0, R=1.0, T=1.0, p=0.0):
     return (sxx, syy, sxy), (ux, uy), (p*Y, beta0 - k*xi)
 
 
-def fd_checks(nu, p=0.0, n=2000, h=1e-5, seed=1):
-    rng = np.random.default_rng(seed)
+def fd_checks(nu, p=0.0, n=2000, h=1e-5, random_state=1):
+    rng = np.random.default_rng(random_state)
     rad, phi = np.sqrt(rng.uniform(0, 0.95**2, n)), rng.uniform(0, 2*np.pi, n)
     X, Y = 1 + rad*np.cos(phi), rad*np.sin(phi)
     keep = np.hypot(X, Y) > 0.05

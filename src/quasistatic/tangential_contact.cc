@@ -162,6 +162,10 @@ namespace DiskImpact
 
       std::unique_ptr<ContactZone>
       make_zone(bool with_friction) const;
+      /// Newton's tolerance on the contact DoFs: 'Newton tolerance' times
+      /// Hertz's approach a^2 / R.
+      double
+      contact_tolerance() const;
       /// @p f less its rigid-motion part, M-orthogonally.
       PETScWrappers::MPI::Vector
       without_rigid_part(const PETScWrappers::MPI::Vector &f) const;
@@ -394,6 +398,13 @@ namespace DiskImpact
     }
 
     template <int dim>
+    double
+    TangentialProblem<dim>::contact_tolerance() const
+    {
+      return settings.newton_tolerance() * a_hertz * a_hertz / R;
+    }
+
+    template <int dim>
     PETScWrappers::MPI::Vector
     TangentialProblem<dim>::without_rigid_part(
       const PETScWrappers::MPI::Vector &f) const
@@ -424,8 +435,7 @@ namespace DiskImpact
       std::vector<Vector<double>> rigid_D;
       for (const auto &r : rigid)
         rigid_D.push_back(solver.observe(r));
-      const double tolerance =
-        settings.newton_tolerance() * a_hertz * a_hertz / R;
+      const double tolerance = contact_tolerance();
 
       // K u = A u - s M u: each pass solves A u = f + s M u_before + E_C P,
       // whose error shrinks by s over K's lowest eigenvalue per pass.
@@ -458,6 +468,8 @@ namespace DiskImpact
           op.get_constraints().distribute(before);
           Vector<double> change = u1_D;
           change -= previous;
+          // At least four passes: with two, a point at the edge of the
+          // stick zone was read as sticking on one rank and slipping on two.
           if (pass >= 3 && change.linfty_norm() <= tolerance)
             break;
           if (pass == 20)
@@ -492,8 +504,7 @@ namespace DiskImpact
       // displacements like the rest.
       const double balance_scale =
         1. / (contact_modulus(parameters) * std::pow(R, dim - 2));
-      const double tolerance =
-        settings.newton_tolerance() * a_hertz * a_hertz / R;
+      const double tolerance         = contact_tolerance();
       unsigned int newton_iterations = 0;
       for (;;)
         {
