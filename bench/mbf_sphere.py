@@ -20,14 +20,17 @@ tractions follow from the annuli's stick and slip (an active-set
 iteration); their sum changes v_t and the spin. Prints, per normalised
 incidence psi1 = 2 v_cp / (mu (1 + epsilon) v_n) (epsilon = 1 here), the
 normalised rebound psi2 and the contact point's restitution beta; with
---compare SWEEP.csv (diskimpact's task 'sweep' over 'Angles of incidence',
-the sphere in 3D, restitution.csv) at the sweep's psi1, beside diskimpact's
-psi2 and the difference. Maw, Barber & Fawcett's own normalisation
+--compare CSV ... (diskimpact's restitution.csv of task 'sweep' over
+'Angles of incidence', or summary.csv of task 'impact', the sphere in 3D)
+at their psi1, beside diskimpact's psi2 and the difference. Maw, Barber & Fawcett's own normalisation
 Psi = 2 (1 - nu) / (2 - nu) psi is printed too.
 
 usage: bench/mbf_sphere.py --nu 0.3 [--mu 0.1] [--annuli 40]
                            [--steps 4000] [--psi1 1 2 ...]
-                           [--compare SWEEP.csv]
+                           [--compare CSV ...] [--stiffness-factor 1]
+
+--stiffness-factor F scales the contact's tangential stiffness (G* -> F G*):
+how far the outcome moves with the tangential-to-normal stiffness ratio.
 """
 import argparse
 import csv
@@ -63,14 +66,15 @@ def influence(edges):
     return mid, matrix
 
 
-def impact(nu, mu, psi1, annuli, steps):
-    """psi2 and beta of one impact at the normalised incidence psi1."""
+def impact(nu, mu, psi1, annuli, steps, stiffness_factor=1.0):
+    """psi2 and beta of one impact at the normalised incidence psi1; the
+    tangential stiffness times stiffness_factor (1: the half-space's)."""
     # Units: R = 1, m = 1, E* = 1, v_n = 1 (the outcome depends on psi1,
     # nu and mu alone).
     e_star, v_n = 1.0, 1.0
     young = e_star * (1.0 - nu**2)
     shear = young / (2.0 * (1.0 + nu))
-    g_star = 4.0 * shear / (2.0 - nu)
+    g_star = 4.0 * shear / (2.0 - nu) * stiffness_factor
     # Hertz: m d'' = -(4/3) E* d^1.5; largest approach and contact time.
     delta_max = (15.0 / 16.0 * v_n**2 / e_star) ** 0.4
     t_contact = 2.94328 * delta_max / v_n
@@ -165,28 +169,35 @@ def main():
     p.add_argument("--annuli", type=int, default=40)
     p.add_argument("--steps", type=int, default=4000)
     p.add_argument("--psi1", type=float, nargs="+")
-    p.add_argument("--compare")
+    p.add_argument("--compare", nargs="+", metavar="CSV")
+    p.add_argument("--stiffness-factor", type=float, default=1.0,
+                   help="the tangential stiffness relative to the "
+                   "half-space's (its tangential-to-normal ratio); 1 is "
+                   "Maw, Barber & Fawcett's model")
     args = p.parse_args()
     chi = 2.0 * (1.0 - args.nu) / (2.0 - args.nu)
     rows = []
-    if args.compare:
-        with open(args.compare, newline="") as f:
+    for path in args.compare or []:
+        with open(path, newline="") as f:
             for r in csv.DictReader(f):
-                if r["status"] == "done":
+                if r.get("status", "done") == "done":
                     rows.append((float(r["psi_incident"]),
                                  float(r["psi_rebound"]),
                                  float(r["contact_point_restitution"])))
-    else:
+    if not rows:
         rows = [(x, math.nan, math.nan) for x in
                 (args.psi1 or [0.5, 1, 2, 3, 4, 5, 6, 7, 8, 10, 14, 20])]
     print(f"nu = {args.nu}, mu = {args.mu}, {args.annuli} annuli, "
-          f"{args.steps} steps; Psi = {chi:.4f} psi")
+          f"{args.steps} steps; Psi = {chi:.4f} psi"
+          + (f"; tangential stiffness x {args.stiffness_factor}"
+             if args.stiffness_factor != 1.0 else ""))
     print("| psi1 | Psi1 | psi2 MBF | Psi2 MBF | beta MBF | psi2 diskimpact "
           "| Psi2 diskimpact | beta diskimpact | Delta Psi2 |")
     print("|---|---|---|---|---|---|---|---|---|")
     worst = 0.0
     for psi1, psi2_fe, beta_fe in rows:
-        psi2, beta = impact(args.nu, args.mu, psi1, args.annuli, args.steps)
+        psi2, beta = impact(args.nu, args.mu, psi1, args.annuli, args.steps,
+                            args.stiffness_factor)
         diff = chi * (psi2_fe - psi2)
         if math.isfinite(diff):
             worst = max(worst, abs(diff))

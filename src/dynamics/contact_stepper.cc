@@ -578,6 +578,19 @@ namespace DiskImpact
   }
 
   template <int dim>
+  Vector<double>
+  ContactStepper<dim>::contact_force_on_candidates() const
+  {
+    Vector<double>       on_D(zone.candidate_dofs().size());
+    const Vector<double> on_C =
+      exact_constraint ? zone.constraint_force(point_forces) : contact_force;
+    const auto &active = zone.active_dofs();
+    for (unsigned int k = 0; k < on_C.size() && k < active.size(); ++k)
+      on_D[active[k]] = on_C[k];
+    return on_D;
+  }
+
+  template <int dim>
   unsigned int
   ContactStepper<dim>::n_contact_dofs() const
   {

@@ -135,6 +135,11 @@ namespace DiskImpact
     /// |C|: the contact DoFs the condensed solve holds.
     unsigned int
     n_contact_dofs() const;
+    /// The contact's force on the candidates' DoFs (ContactZone::
+    /// candidate_dofs()) in the last step: the step force of a penalty-type
+    /// law, the end state's point forces of the exact constraint.
+    dealii::Vector<double>
+    contact_force_on_candidates() const;
 
   private:
     /// Factorize the effective matrix cm M + cd D + (1 - af) K for @p dt.

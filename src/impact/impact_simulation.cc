@@ -5,6 +5,7 @@
 #include "elasticity/rotation_field.h"
 #include "impact/impact_estimates.h"
 #include "output/atomic_file.h"
+#include "output/contact_traction.h"
 #include "output/hdf5_output.h"
 #include "output/state_output.h"
 #include "run/parameters.h"
@@ -17,6 +18,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 #include <tuple>
 
@@ -152,10 +154,12 @@ namespace DiskImpact
       snapshot();
 
     const auto start = std::chrono::steady_clock::now();
+    last_report      = start;
     do
       {
         advance();
         record(stepper->time(), state);
+        report_progress(start);
         if (projection && state.force_average > 0.)
           projection->add_sample(stepper->displacement(),
                                  stepper->velocity(),
@@ -549,6 +553,31 @@ namespace DiskImpact
 
   template <int dim>
   void
+  ImpactSimulation<dim>::report_progress(
+    const std::chrono::steady_clock::time_point start)
+  {
+    const auto now = std::chrono::steady_clock::now();
+    if (!with_outputs || now - last_report < std::chrono::seconds(30))
+      return;
+    last_report = now;
+    if (Utilities::MPI::this_mpi_process(communicator) != 0)
+      return;
+    const double elapsed  = std::chrono::duration<double>(now - start).count();
+    const double fraction = stepper->time() / contact_time_estimate;
+    std::ostringstream line;
+    line.precision(4);
+    line << "  t = " << stepper->time() * velocity_unit / radius << " R/c, "
+         << std::lround(100. * fraction) << " % of the contact time expected, "
+         << summary.steps << " steps in " << std::lround(elapsed) << " s";
+    // The collision ends near the contact time expected.
+    if (fraction > 0.05 && fraction < 1.)
+      line << ", about " << std::lround(elapsed * (1. / fraction - 1.))
+           << " s left";
+    std::cout << line.str() << std::endl;
+  }
+
+  template <int dim>
+  void
   ImpactSimulation<dim>::snapshot()
   {
     if (!with_outputs)
@@ -560,6 +589,11 @@ namespace DiskImpact
     const FieldScales scales = parameters.units.field_scales();
     const double time = stepper->time() * velocity_unit / radius * scales.time;
     const auto   materials = ImpactOperatorsBase::materials(parameters);
+    // The contact's traction, for ParaView.
+    const auto traction =
+      contact_traction(op,
+                       zone->candidate_dofs(),
+                       stepper->contact_force_on_candidates());
     if constexpr (dim == 2)
       if (parameters.impact.revolved_view() > 0.)
         {
@@ -573,7 +607,8 @@ namespace DiskImpact
                                               directory,
                                               "impact",
                                               snapshots.size(),
-                                              scales);
+                                              scales,
+                                              &traction);
           snapshots.emplace_back(time, flat);
           revolved_snapshots.emplace_back(time, revolved);
           return;
@@ -585,7 +620,8 @@ namespace DiskImpact
                                                 directory,
                                                 "impact",
                                                 snapshots.size(),
-                                                scales));
+                                                scales,
+                                                &traction));
   }
 
   template <int dim>

@@ -13,6 +13,7 @@
 
 #include <deal.II/lac/petsc_vector.h>
 
+#include <chrono>
 #include <memory>
 #include <string>
 #include <utility>
@@ -66,6 +67,11 @@ namespace DiskImpact
     /// Whether the collision has ended and the margin after it passed.
     bool
     collision_over();
+    /// Every 30 s of wall time, in a run that writes its outputs, on the
+    /// first rank: the time reached against the contact time expected, the
+    /// steps so far and the wall time left at that pace.
+    void
+    report_progress(std::chrono::steady_clock::time_point start);
     /// ParaView output of the current state.
     void
     snapshot();
@@ -138,6 +144,8 @@ namespace DiskImpact
 
     ImpactSummary summary;
     double        contact_time_estimate = 0.;
+    /// When report_progress() last printed (or the time loop began).
+    std::chrono::steady_clock::time_point last_report;
     double        approach_estimate     = 0.; ///< largest approach, 1-DOF
 
     /// The mesh and operators, perhaps shared with other runs.

@@ -70,16 +70,25 @@ namespace DiskImpact
       StatePatches(const ElasticityOperator<dim>    &op,
                    const std::vector<Material>      &materials,
                    const PETScWrappers::MPI::Vector &ghosted_u,
-                   const FieldScales                &scales)
+                   const FieldScales                &scales,
+                   const PETScWrappers::MPI::Vector *ghosted_traction)
           : stresses(stress_fields<dim>(materials))
       {
         data_out.attach_dof_handler(op.get_dof_handler());
-        data_out.add_data_vector(
-          ghosted_u,
-          std::vector<std::string>(dim, "displacement"),
-          DataOut<dim>::type_dof_data,
-          std::vector<DataComponentInterpretation::DataComponentInterpretation>(
-            dim, DataComponentInterpretation::component_is_part_of_vector));
+        const std::vector<
+          DataComponentInterpretation::DataComponentInterpretation>
+          vector_field(
+            dim, DataComponentInterpretation::component_is_part_of_vector);
+        data_out.add_data_vector(ghosted_u,
+                                 std::vector<std::string>(dim, "displacement"),
+                                 DataOut<dim>::type_dof_data,
+                                 vector_field);
+        if (ghosted_traction)
+          data_out.add_data_vector(*ghosted_traction,
+                                   std::vector<std::string>(dim,
+                                                            "contact_traction"),
+                                   DataOut<dim>::type_dof_data,
+                                   vector_field);
         for (const auto &field : stresses)
           data_out.add_data_vector(ghosted_u, *field);
         data_out.build_patches(op.get_mapping(),
@@ -110,9 +119,10 @@ namespace DiskImpact
                        const std::string                &directory,
                        const std::string                &basename,
                        const unsigned int                index,
-                       const FieldScales                &scales)
+                       const FieldScales                &scales,
+                       const PETScWrappers::MPI::Vector *ghosted_traction)
   {
-    StatePatches<dim> state(op, material, ghosted_u, scales);
+    StatePatches<dim> state(op, material, ghosted_u, scales, ghosted_traction);
     state.data_out.set_flags(vtu_flags());
     return write_vtu_record(state.data_out,
                             directory,
@@ -128,7 +138,8 @@ namespace DiskImpact
                        const std::string &,
                        const std::string &,
                        unsigned int,
-                       const FieldScales &);
+                       const FieldScales &,
+                       const PETScWrappers::MPI::Vector *);
   template std::string
   write_deformed_state(const ElasticityOperator<3> &,
                        const std::vector<Material> &,
@@ -136,22 +147,25 @@ namespace DiskImpact
                        const std::string &,
                        const std::string &,
                        unsigned int,
-                       const FieldScales &);
+                       const FieldScales &,
+                       const PETScWrappers::MPI::Vector *);
 
   std::pair<std::string, std::string>
-  write_deformed_and_revolved_state(const ElasticityOperator<2>      &op,
-                                    const std::vector<Material>      &material,
-                                    const PETScWrappers::MPI::Vector &ghosted_u,
-                                    const Point<2>                   &centre,
-                                    const double                      radius,
-                                    const double       angle_degrees,
-                                    const std::string &directory,
-                                    const std::string &basename,
-                                    const unsigned int index,
-                                    const FieldScales &scales)
+  write_deformed_and_revolved_state(
+    const ElasticityOperator<2>      &op,
+    const std::vector<Material>      &material,
+    const PETScWrappers::MPI::Vector &ghosted_u,
+    const Point<2>                   &centre,
+    const double                      radius,
+    const double                      angle_degrees,
+    const std::string                &directory,
+    const std::string                &basename,
+    const unsigned int                index,
+    const FieldScales                &scales,
+    const PETScWrappers::MPI::Vector *ghosted_traction)
   {
     // One set of patches (the stresses evaluated once) for both files.
-    StatePatches<2> state(op, material, ghosted_u, scales);
+    StatePatches<2> state(op, material, ghosted_u, scales, ghosted_traction);
     state.data_out.set_flags(vtu_flags());
     const MPI_Comm    communicator = op.get_dof_handler().get_communicator();
     const std::string flat         = write_vtu_record(

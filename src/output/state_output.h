@@ -27,17 +27,20 @@ namespace DiskImpact
    * name relative to @p directory. The plane models write the section's
    * stress (von Mises, principal stresses, pressure; see
    * StressScalarsPostprocessor), a 3D body the solid's
-   * (SolidStressPostprocessor).
+   * (SolidStressPostprocessor). With @p ghosted_traction (contact_traction())
+   * also the vector field contact_traction, scaled as the stresses.
    */
   template <int dim>
   std::string
-  write_deformed_state(const ElasticityOperator<dim>            &op,
-                       const std::vector<Material>              &materials,
-                       const dealii::PETScWrappers::MPI::Vector &ghosted_u,
-                       const std::string                        &directory,
-                       const std::string                        &basename,
-                       unsigned int                              index,
-                       const FieldScales                        &scales = {});
+  write_deformed_state(
+    const ElasticityOperator<dim>            &op,
+    const std::vector<Material>              &materials,
+    const dealii::PETScWrappers::MPI::Vector &ghosted_u,
+    const std::string                        &directory,
+    const std::string                        &basename,
+    unsigned int                              index,
+    const FieldScales                        &scales           = {},
+    const dealii::PETScWrappers::MPI::Vector *ghosted_traction = nullptr);
 
   /**
    * write_deformed_state() for a sphere (Material axisymmetric), and from
@@ -59,5 +62,6 @@ namespace DiskImpact
     const std::string                        &directory,
     const std::string                        &basename,
     unsigned int                              index,
-    const FieldScales                        &scales = {});
+    const FieldScales                        &scales           = {},
+    const dealii::PETScWrappers::MPI::Vector *ghosted_traction = nullptr);
 } // namespace DiskImpact
