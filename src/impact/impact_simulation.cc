@@ -5,7 +5,6 @@
 #include "elasticity/rotation_field.h"
 #include "impact/impact_estimates.h"
 #include "output/atomic_file.h"
-#include "output/contact_traction.h"
 #include "output/hdf5_output.h"
 #include "output/state_output.h"
 #include "run/parameters.h"
@@ -590,10 +589,11 @@ namespace DiskImpact
     const double time = stepper->time() * velocity_unit / radius * scales.time;
     const auto   materials = ImpactOperatorsBase::materials(parameters);
     // The contact's traction, for ParaView.
+    if (!traction_field)
+      traction_field = std::make_unique<ContactTraction<dim>>(op);
     const auto traction =
-      contact_traction(op,
-                       zone->candidate_dofs(),
-                       stepper->contact_force_on_candidates());
+      (*traction_field)(zone->candidate_dofs(),
+                        stepper->contact_force_on_candidates());
     if constexpr (dim == 2)
       if (parameters.impact.revolved_view() > 0.)
         {

@@ -9,6 +9,7 @@
 #include "impact/impact_operators.h"
 #include "impact/impact_summary.h"
 #include "modal/modal_projection.h"
+#include "output/contact_traction.h"
 #include "output/csv_table.h"
 
 #include <deal.II/lac/petsc_vector.h>
@@ -144,9 +145,9 @@ namespace DiskImpact
 
     ImpactSummary summary;
     double        contact_time_estimate = 0.;
+    double        approach_estimate     = 0.; ///< largest approach, 1-DOF
     /// When report_progress() last printed (or the time loop began).
     std::chrono::steady_clock::time_point last_report;
-    double        approach_estimate     = 0.; ///< largest approach, 1-DOF
 
     /// The mesh and operators, perhaps shared with other runs.
     std::shared_ptr<ImpactOperators<dim>> operators;
@@ -158,6 +159,8 @@ namespace DiskImpact
     std::unique_ptr<BodyMotion<dim>>     bodies;
     std::unique_ptr<ModalProjection>     projection;
     std::unique_ptr<ContactStepper<dim>> stepper;
+    /// The outputs' contact traction (made at the first snapshot).
+    std::unique_ptr<ContactTraction<dim>> traction_field;
 
     /// The centre of mass's motion along the wall normal: the uniform field
     /// n, its momentum functional M n and the mass n . M n.

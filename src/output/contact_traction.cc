@@ -52,12 +52,18 @@ namespace DiskImpact
   } // namespace
 
   template <int dim>
-  PETScWrappers::MPI::Vector
-  contact_traction(const ElasticityOperator<dim>              &op,
-                   const std::vector<types::global_dof_index> &dofs,
-                   const Vector<double>                       &forces)
+  ContactTraction<dim>::ContactTraction(const ElasticityOperator<dim> &op)
+      : op(op)
+      , weights(surface_weights(op))
   {
-    const auto  weights  = surface_weights(op);
+  }
+
+  template <int dim>
+  PETScWrappers::MPI::Vector
+  ContactTraction<dim>::operator()(
+    const std::vector<types::global_dof_index> &dofs,
+    const Vector<double>                       &forces) const
+  {
     auto        traction = op.create_vector();
     const auto &owned    = op.locally_owned_dofs();
     for (unsigned int k = 0; k < dofs.size(); ++k)
@@ -68,12 +74,6 @@ namespace DiskImpact
     return op.create_ghosted(traction);
   }
 
-  template PETScWrappers::MPI::Vector
-  contact_traction(const ElasticityOperator<2> &,
-                   const std::vector<types::global_dof_index> &,
-                   const Vector<double> &);
-  template PETScWrappers::MPI::Vector
-  contact_traction(const ElasticityOperator<3> &,
-                   const std::vector<types::global_dof_index> &,
-                   const Vector<double> &);
+  template class ContactTraction<2>;
+  template class ContactTraction<3>;
 } // namespace DiskImpact

@@ -14,18 +14,29 @@ namespace DiskImpact
 
   /**
    * The contact's traction on the body's surface as a field of the
-   * displacement's finite element, for ParaView: the nodal contact forces
-   * @p forces on the DoFs @p dofs (every rank holds them all) divided by
-   * each DoF's surface weight, the integral of its shape function over the
-   * curved edge (times the section's measure). A uniform traction is
+   * displacement's finite element, for ParaView: nodal contact forces
+   * divided by each DoF's surface weight, the integral of its shape
+   * function over the curved edge (times the section's measure), which is
+   * assembled once, at construction (collective). A uniform traction is
    * returned exactly; the normal and tangential components are its
-   * projections on the wall's normal and tangents. Zero away from the
-   * contact; hanging nodes follow the constraints. Returns a ghosted vector.
-   * Collective.
+   * projections on the wall's normal and tangents.
    */
   template <int dim>
-  dealii::PETScWrappers::MPI::Vector
-  contact_traction(const ElasticityOperator<dim>                      &op,
-                   const std::vector<dealii::types::global_dof_index> &dofs,
-                   const dealii::Vector<double>                       &forces);
+  class ContactTraction
+  {
+  public:
+    explicit ContactTraction(const ElasticityOperator<dim> &op);
+
+    /// The traction of the nodal forces @p forces on the DoFs @p dofs
+    /// (every rank holds them all): zero away from the contact, hanging
+    /// nodes following the constraints. Returns a ghosted vector.
+    /// Collective.
+    dealii::PETScWrappers::MPI::Vector
+    operator()(const std::vector<dealii::types::global_dof_index> &dofs,
+               const dealii::Vector<double> &forces) const;
+
+  private:
+    const ElasticityOperator<dim>     &op;
+    dealii::PETScWrappers::MPI::Vector weights;
+  };
 } // namespace DiskImpact

@@ -27,7 +27,7 @@ namespace DiskImpact
    * name relative to @p directory. The plane models write the section's
    * stress (von Mises, principal stresses, pressure; see
    * StressScalarsPostprocessor), a 3D body the solid's
-   * (SolidStressPostprocessor). With @p ghosted_traction (contact_traction())
+   * (SolidStressPostprocessor). With @p ghosted_traction (ContactTraction)
    * also the vector field contact_traction, scaled as the stresses.
    */
   template <int dim>

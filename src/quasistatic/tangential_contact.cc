@@ -468,8 +468,11 @@ namespace DiskImpact
           op.get_constraints().distribute(before);
           Vector<double> change = u1_D;
           change -= previous;
-          // At least four passes: with two, a point at the edge of the
-          // stick zone was read as sticking on one rank and slipping on two.
+          // At least four passes: with two, the 1- and 2-rank runs read a
+          // point at the edge of the stick zone differently in the one
+          // comparison made. Such a point (|tau| = mu p within rounding)
+          // can still fall either way with four; the 2-rank regression
+          // checks the stick zone against the theory.
           if (pass >= 3 && change.linfty_norm() <= tolerance)
             break;
           if (pass == 20)

@@ -89,7 +89,7 @@ TEST_CASE("contact traction: a uniform traction is recovered exactly",
   }
   REQUIRE(dofs.size() > 20);
 
-  const auto traction = contact_traction(op, dofs, forces);
+  const auto   traction    = ContactTraction<2>(op)(dofs, forces);
   const auto &constraints = op.get_constraints();
   unsigned int checked = 0;
   for (const auto &[dof, component] : edge_dofs)
