@@ -16,6 +16,12 @@ Prints epsilon and the contact time of the DEM code beside diskimpact's,
 and fails (exit 1) unless LIGGGHTS (and Yade, where it ran) reproduces
 epsilon at the reference speed within --tolerance (1e-3).
 
+For a disk (the law's DEM inputs are 2D, dem/lammps_2d.txt) the collisions
+run in LAMMPS with 'dimension 2' at every speed of the table (the linear
+spring-dashpot: constant epsilon and contact time), and the check is that
+LAMMPS reproduces epsilon at the reference speed within --tolerance and its
+contact time within 1e-3 (relative).
+
 With --oblique SWEEP.csv (restitution.csv of diskimpact's task 'sweep'
 over 'Angles of incidence' for the same sphere, in its own units: the
 sphere in 3D, the same Poisson ratio and friction coefficient as the law)
@@ -35,6 +41,7 @@ import csv
 import json
 import math
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -67,9 +74,15 @@ def main():
         rows = list(csv.DictReader(f))
     scales = law["si_scales"]
     radius = scales["R_m"]
-    density = float(open(os.path.join(args.directory, "dem",
-                                      "liggghts.txt")).read()
-                    .split("density ")[1].split()[0])
+    dimension = law["dem"].get("dimension", 3)
+    snippet_of = ({"lammps": "lammps_2d.txt"} if dimension == 2 else
+                  {"liggghts": "liggghts.txt", "lammps": "lammps.txt",
+                   "yade": "yade.py"})
+    density = float(re.search(
+        r"\bdensity(?:/disc)? (\S+)",
+        open(os.path.join(args.directory, "dem",
+                          snippet_of["lammps" if dimension == 2 else
+                                     "liggghts"])).read()).group(1).rstrip("'"))
     v_ref = law["dem"]["reference_speed_si"]
     table = [(float(r["speed_si"]), float(r["epsilon"]),
               float(r["contact_time_si"])) for r in rows]
@@ -84,14 +97,18 @@ def main():
         results = []
         for v, eps, tc in speeds:
             e_dem, tc_dem = dem_collision.collide(code, snippet, radius,
-                                                  density, v)
-            results.append((v, eps, e_dem))
+                                                  density, v,
+                                                  dimension=dimension)
+            results.append((v, eps, e_dem, tc, tc_dem))
             print(f"  {v:11.5g}  {eps:13.7f}  {e_dem:12.7f}  "
                   f"{e_dem - eps:+11.2e}  {tc:17.6e}  {tc_dem:11.6e}  "
                   f"{tc_dem / tc - 1:+.3e}")
         return results
 
     reference = (v_ref, law["dem"]["epsilon"], law["dem"]["contact_time_si"])
+    if dimension == 2:
+        disk_check(args, law, table, reference, radius, density, run)
+        return
     extremes = [table[0], reference, table[-1]]
     checked = {"LIGGGHTS": run("liggghts", "liggghts.txt", extremes)}
     run("lammps", "lammps.txt", table)
@@ -116,8 +133,29 @@ def main():
         sys.exit("dem_check: a DEM code misses epsilon at the reference speed")
 
 
+def disk_check(args, law, table, reference, radius, density, run):
+    """The disk's law in LAMMPS' 2D: every speed of the table and the
+    reference speed head-on, then the oblique sweep if given; exits 1 if
+    epsilon or the contact time at the reference speed is missed."""
+    results = run("lammps", "lammps_2d.txt", sorted(table + [reference]))
+    if args.oblique:
+        oblique_check(args.directory, law, args.oblique, radius, density,
+                      [("lammps", "lammps_2d.txt")], args.oblique_speed,
+                      dimension=2)
+    # The reference row: the smooth fit's epsilon, which the law exports.
+    v, eps, e_dem, tc, tc_dem = next(r for r in results
+                                     if r[:2] == reference[:2])
+    eps_error, tc_error = abs(e_dem - eps), abs(tc_dem / tc - 1.0)
+    print(f"LAMMPS (2D) at the reference speed {v:g} m/s: |eps_DEM - eps| = "
+          f"{eps_error:.2e} (tolerance {args.tolerance:g}), contact time "
+          f"{tc_error:.2e} (tolerance 1e-3)")
+    if not (eps_error <= args.tolerance and tc_error <= 1e-3):
+        sys.exit("dem_check: LAMMPS misses epsilon or the contact time at "
+                 "the reference speed")
+
+
 def oblique_check(directory, law, sweep_csv, radius, density, codes,
-                  speed):
+                  speed, dimension=3):
     """The oblique impacts of the sweep in each code; prints the table."""
     with open(sweep_csv, newline="") as f:
         rows = [r for r in csv.DictReader(f) if r["status"] == "done"]
@@ -148,7 +186,7 @@ def oblique_check(directory, law, sweep_csv, radius, density, codes,
                   "spin": float(r["spin_final"]) / v_n,
                   "rebound_angle": float(r["rebound_angle"])}
             dem = dem_collision.oblique(code, snippet, radius, density, speed,
-                                        angle)
+                                        angle, dimension=dimension)
             for key in fe:
                 largest[(code, key)] = max(largest.get((code, key), 0.0),
                                            abs(dem[key] - fe[key]))

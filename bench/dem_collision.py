@@ -18,6 +18,12 @@ are created and before the run:
   Yade:      mat = O.materials.append(ViscElMat(en=..., tc=..., ...)) (Python;
              the generated script builds both spheres from 'mat')
 
+With --dimension 2 (LAMMPS only) the bodies are disks: 'dimension 2',
+mass rho pi R^2 per unit thickness ('set ... density/disc'), moment of
+inertia m R^2 / 2 ('fix nve/sphere disc'), and the snippet's law is the
+linear 'hooke k_n eta_n' of the pair, whose contact time
+pi / sqrt(k_n / m_eff - (eta_n / 2 m_eff)^2), m_eff = m / 2, sets dt.
+
 The time step is dt = t_H / 2000 (Yade: tc / 2000, tc from the snippet)
 with t_H the Hertz contact time
 2.94328 (15 m v^2 / (16 E* sqrt(R)))^(2/5) / v, m the sphere mass and
@@ -36,7 +42,7 @@ print; Yade: a PyRunner). Then
 
 usage: bench/dem_collision.py --code liggghts|lammps|yade --snippet FILE
                               --radius R --density RHO --speeds v1 [v2 ...]
-                              [--work DIR]
+                              [--dimension 3|2] [--work DIR]
        prints 'speed <v> epsilon <eps> contact_time <t_c>' per speed.
        Without --work each run happens in a temporary directory, removed
        unless the run fails.
@@ -97,8 +103,25 @@ def hertz_time(radius, density, E, nu, speed):
                       / (16.0 * e_star * math.sqrt(radius)))**0.4 / speed
 
 
-def time_step(code, snippet, radius, density, speed):
+def linear_time(snippet, radius, density):
+    """Contact time of two disks (mass rho pi R^2 per unit thickness) with
+    the snippet's linear spring-dashpot 'hooke k_n eta_n'."""
+    law = re.search(r"^pair_coeff.*\bhooke\s+(\S+)\s+(\S+)", snippet,
+                    re.MULTILINE)
+    if law is None:
+        raise DEMError("cannot read 'hooke k_n eta_n' from the 2D snippet")
+    k, eta = float(law.group(1)), float(law.group(2))
+    m_eff = 0.5 * density * math.pi * radius**2
+    omega2 = k / m_eff - (0.5 * eta / m_eff)**2
+    if not omega2 > 0.0:
+        raise DEMError("the snippet's spring-dashpot is overdamped")
+    return math.pi / math.sqrt(omega2)
+
+
+def time_step(code, snippet, radius, density, speed, dimension=3):
     """dt: the contact time of the snippet's law / STEPS_PER_CONTACT."""
+    if dimension == 2:
+        return linear_time(snippet, radius, density) / STEPS_PER_CONTACT
     if code == "yade":
         tc = re.search(r"\btc\s*=\s*([^,)\s]+)", snippet)
         if tc is None:
@@ -146,13 +169,19 @@ history.close()
 
 
 def input_script(code, snippet, radius, density, speed, tangential, dt,
-                 steps, gap):
+                 steps, gap, dimension=3):
     """The complete input script; fix print writes
     'step gap v1x v2x v1y omega1z'."""
     if code == "yade":
         return yade_script(snippet, radius, speed, tangential, dt, steps, gap)
     half = 4.0 * radius
     x = radius + 0.5 * gap
+    # 2D: disks in the plane z = 0 (LAMMPS needs a periodic z).
+    flat = dimension == 2
+    boundary = "f f p" if flat else "f f f"
+    density_keyword = "density/disc" if flat else "density"
+    integrator = ("nve/sphere disc\nfix flat all enforce2d" if flat
+                  else "nve/sphere")
     if code == "liggghts":
         setup = "communicate single vel yes"
         hard = "hard_particles yes  # LIGGGHTS: allows E > 1e9 Pa in SI units\n"
@@ -161,9 +190,10 @@ def input_script(code, snippet, radius, density, speed, tangential, dt,
         hard = ""
     return f"""\
 units si
+{"dimension 2" if flat else ""}
 atom_style {"granular" if code == "liggghts" else "sphere"}
 atom_modify map array
-boundary f f f
+boundary {boundary}
 newton off
 {setup}
 region box block {-half!r} {half!r} {-half!r} {half!r} {-half!r} {half!r} units box
@@ -172,14 +202,14 @@ neighbor {0.1 * radius!r} bin
 neigh_modify delay 0 every 1 check yes
 create_atoms 1 single {-x!r} 0 0 units box
 create_atoms 1 single {x!r} 0 0 units box
-set atom 1 diameter {2 * radius!r} density {density!r} vx {speed!r} vy {-tangential!r}
-set atom 2 diameter {2 * radius!r} density {density!r} vx {-speed!r} vy {tangential!r}
+set atom 1 diameter {2 * radius!r} {density_keyword} {density!r} vx {speed!r} vy {-tangential!r}
+set atom 2 diameter {2 * radius!r} {density_keyword} {density!r} vx {-speed!r} vy {tangential!r}
 {hard}
 # ---- contact model (snippet) ----
 {snippet.strip()}
 # ---- end of snippet ----
 
-fix integr all nve/sphere
+fix integr all {integrator}
 timestep {dt!r}
 variable s equal step
 variable g equal sqrt((x[2]-x[1])^2+(y[2]-y[1])^2+(z[2]-z[1])^2)-{2 * radius!r}
@@ -233,13 +263,15 @@ def analyse(path, dt, radius=1.0):
     return -after / before, contact_time, tangential
 
 
-def collide(code, snippet_text, radius, density, speed, work_dir=None):
+def collide(code, snippet_text, radius, density, speed, work_dir=None,
+            dimension=3):
     """Run one head-on collision; returns (epsilon, contact_time)."""
-    return run(code, snippet_text, radius, density, speed, 0.0, work_dir)[:2]
+    return run(code, snippet_text, radius, density, speed, 0.0, work_dir,
+               dimension)[:2]
 
 
 def oblique(code, snippet_text, radius, density, speed, angle,
-            work_dir=None):
+            work_dir=None, dimension=3):
     """Run one oblique collision at the angle of incidence @p angle (degrees;
     each sphere's speed @p speed, its normal part speed cos(angle), no spin);
     returns a dictionary of sphere 1's outcome, as on a wall: epsilon,
@@ -249,16 +281,18 @@ def oblique(code, snippet_text, radius, density, speed, angle,
     v_n = speed * math.cos(math.radians(angle))
     v_t = speed * math.sin(math.radians(angle))
     eps, tc, tangential = run(code, snippet_text, radius, density, v_n, v_t,
-                              work_dir)
+                              work_dir, dimension)
     return dict(tangential, epsilon=eps, contact_time=tc)
 
 
 def run(code, snippet_text, radius, density, speed, tangential,
-        work_dir=None):
+        work_dir=None, dimension=3):
     """Run one collision, normal speed @p speed and tangential speed
-    @p tangential of each sphere; returns analyse()'s triple."""
+    @p tangential of each sphere (disk in 2D); returns analyse()'s triple."""
     if code not in BINARY:
         raise DEMError("unknown code %r (liggghts, lammps or yade)" % code)
+    if dimension == 2 and code != "lammps":
+        raise DEMError("2D collisions run in LAMMPS only")
     exe = shutil.which(BINARY[code])
     if exe is None:
         raise DEMError("%s binary '%s' not found on PATH (bench/"
@@ -266,10 +300,10 @@ def run(code, snippet_text, radius, density, speed, tangential,
     if work_dir is None:  # a temporary directory, kept if the run fails
         tmp = tempfile.mkdtemp(prefix="dem_collision_")
         result = run(code, snippet_text, radius, density, speed, tangential,
-                     tmp)
+                     tmp, dimension)
         shutil.rmtree(tmp)
         return result
-    dt = time_step(code, snippet_text, radius, density, speed)
+    dt = time_step(code, snippet_text, radius, density, speed, dimension)
     steps = PRE_STEPS + RUN_CONTACTS * STEPS_PER_CONTACT
     gap = 2.0 * speed * PRE_STEPS * dt
     run_dir = os.path.join(work_dir, "%s_v%r_t%r" % (code, speed, tangential))
@@ -277,7 +311,7 @@ def run(code, snippet_text, radius, density, speed, tangential,
     script = "collision.py" if code == "yade" else "in.collision"
     with open(os.path.join(run_dir, script), "w") as f:
         f.write(input_script(code, snippet_text, radius, density, speed,
-                             tangential, dt, steps, gap))
+                             tangential, dt, steps, gap, dimension))
     history = os.path.join(run_dir, "history.txt")
     if os.path.exists(history):
         os.remove(history)
@@ -309,13 +343,15 @@ def main():
     p.add_argument("--density", type=float, required=True, help="kg/m^3")
     p.add_argument("--speeds", type=float, nargs="+", required=True,
                    help="speed v of each sphere in m/s (relative speed 2v)")
+    p.add_argument("--dimension", type=int, choices=(2, 3), default=3,
+                   help="2: disks in LAMMPS' 2D (per unit thickness)")
     p.add_argument("--work", help="directory for the runs (default: temporary)")
     args = p.parse_args()
     snippet = open(args.snippet).read()
     try:
         for v in args.speeds:
             eps, tc = collide(args.code, snippet, args.radius, args.density, v,
-                              args.work)
+                              args.work, args.dimension)
             print("speed %r epsilon %r contact_time %r" % (v, eps, tc),
                   flush=True)
     except DEMError as e:

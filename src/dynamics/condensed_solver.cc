@@ -12,6 +12,91 @@ namespace DiskImpact
 {
   using namespace dealii;
 
+  namespace
+  {
+    /// The columns of @p dP with a nonzero entry (@p active) and
+    /// M = S dP(:, active), from the rows of dP those columns touch.
+    void
+    active_jacobian_columns(const FullMatrix<double>  &S,
+                            const FullMatrix<double>  &dP,
+                            std::vector<unsigned int> &active,
+                            FullMatrix<double>        &M)
+    {
+      const unsigned int        n = dP.m();
+      std::vector<unsigned int> rows;
+      std::vector<bool>         touched(n, false);
+      active.clear();
+      for (unsigned int j = 0; j < n; ++j)
+        {
+          bool nonzero = false;
+          for (unsigned int i = 0; i < n; ++i)
+            if (dP(i, j) != 0.)
+              nonzero = touched[i] = true;
+          if (nonzero)
+            active.push_back(j);
+        }
+      for (unsigned int i = 0; i < n; ++i)
+        if (touched[i])
+          rows.push_back(i);
+      FullMatrix<double> S_rows(n, rows.size()),
+        dP_block(rows.size(), active.size());
+      for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int k = 0; k < rows.size(); ++k)
+          S_rows(i, k) = S(i, rows[k]);
+      for (unsigned int k = 0; k < rows.size(); ++k)
+        for (unsigned int l = 0; l < active.size(); ++l)
+          dP_block(k, l) = dP(rows[k], active[l]);
+      M.reinit(n, active.size());
+      if (!active.empty())
+        S_rows.mmult(M, dP_block);
+    }
+
+    /// The solution x of (I - M E_active^T) x = h: on the active rows
+    /// (I - M(active, :)) x_active = h_active, then x_i = h_i + M(i, :)
+    /// x_active on the others, so only the contact's share is factorized.
+    Vector<double>
+    solve_active_jacobian(const std::vector<unsigned int> &active,
+                          const FullMatrix<double>        &M,
+                          const Vector<double>            &h)
+    {
+      Vector<double>     x(h);
+      const unsigned int a = active.size();
+      if (a == 0)
+        return x;
+      LAPACKFullMatrix<double> block(a, a);
+      Vector<double>           x_active(a);
+      for (unsigned int k = 0; k < a; ++k)
+        {
+          for (unsigned int l = 0; l < a; ++l)
+            block(k, l) = -M(active[k], l);
+          block(k, k) += 1.;
+          x_active(k) = h(active[k]);
+        }
+      block.compute_lu_factorization();
+      block.solve(x_active);
+      M.vmult_add(x, x_active);
+      for (unsigned int k = 0; k < a; ++k)
+        x(active[k]) = x_active(k);
+      return x;
+    }
+
+    /// I - M E_active^T as a full matrix.
+    FullMatrix<double>
+    full_jacobian(const unsigned int               n,
+                  const std::vector<unsigned int> &active,
+                  const FullMatrix<double>        &M)
+    {
+      FullMatrix<double> jacobian(n, n);
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          jacobian(i, i) = 1.;
+          for (unsigned int l = 0; l < active.size(); ++l)
+            jacobian(i, active[l]) -= M(i, l);
+        }
+      return jacobian;
+    }
+  } // namespace
+
   CondensedSolver::CondensedSolver(const PETScWrappers::MPI::SparseMatrix &A,
                                    const IndexSet    &locally_owned,
                                    MPI_Comm           communicator,
@@ -220,22 +305,19 @@ namespace DiskImpact
   {
     const unsigned int n = y_C.size();
     // h(u) = u - y_C - S P(u) and |h|, with the Jacobian I - S dP/du.
-    Vector<double>     h(n), sp(n);
-    FullMatrix<double> jacobian;
-    auto               residual = [&](const Vector<double> &u, bool with_jac) {
+    Vector<double> h(n), sp(n);
+    // Only the columns `active` of dP/du are nonzero (points in contact):
+    // the Jacobian is I - M E_active^T with M = S dP/du(:, active).
+    std::vector<unsigned int> active;
+    FullMatrix<double>        M;
+    auto residual = [&](const Vector<double> &u, bool with_jac) {
       auto [P, dP] = force(u);
       S.vmult(sp, P);
       h = u;
       h -= y_C;
       h -= sp;
       if (with_jac)
-        {
-          jacobian.reinit(n, n);
-          S.mmult(jacobian, dP);
-          jacobian *= -1.;
-          for (unsigned int i = 0; i < n; ++i)
-            jacobian(i, i) += 1.;
-        }
+        active_jacobian_columns(S, dP, active, M);
       return h.linfty_norm();
     };
     double norm = residual(u_C, true);
@@ -243,11 +325,7 @@ namespace DiskImpact
       {
         if (norm <= tolerance)
           return true;
-        LAPACKFullMatrix<double> system(n, n);
-        system = jacobian;
-        system.compute_lu_factorization();
-        Vector<double> step(h);
-        system.solve(step);
+        Vector<double> step  = solve_active_jacobian(active, M, h);
         const double norm2 = h.l2_norm();
         // Backtracking: the penalty's kinks can make a full step overshoot.
         double         length = 1.;
@@ -285,6 +363,7 @@ namespace DiskImpact
           {
             residual(u_C, false);
             const Vector<double> h0(h);
+            const auto           jacobian = full_jacobian(n, active, M);
             FullMatrix<double>   normal(n, n);
             jacobian.Tmmult(normal, jacobian);
             Vector<double> gradient(n);

@@ -106,5 +106,20 @@ namespace DiskImpact
     {
       return 2. * dissipative_constant * effective_modulus / effective_mass;
     }
+
+    LinearSpringDashpot
+    linear_spring_dashpot(const double epsilon,
+                          const double contact_time,
+                          const double effective_mass)
+    {
+      if (!(epsilon > 0. && epsilon <= 1.) || !(contact_time > 0.) ||
+          !(effective_mass > 0.))
+        throw std::domain_error("linear_spring_dashpot: needs 0 < epsilon <= "
+                                "1, contact time > 0 and mass > 0");
+      const double log_e = std::log(epsilon);
+      return {effective_mass * (M_PI * M_PI + log_e * log_e) /
+                (contact_time * contact_time),
+              -2. * effective_mass * log_e / contact_time};
+    }
   } // namespace Reference
 } // namespace DiskImpact

@@ -64,6 +64,26 @@ namespace DiskImpact
     LinearDashpotCollision
     yade_viscel_inputs(double epsilon, double contact_time);
 
+    /**
+     * A linear spring-dashpot F = k d + eta d' between bodies of effective
+     * mass m (LAMMPS' 'hooke k eta' with 'damping velocity'), the force
+     * allowed to pull, the collision ended when the overlap d returns to
+     * zero: m d'' + eta d' + k d = 0 gives the restitution epsilon and the
+     * contact time t_c for
+     *
+     *   k = m (pi^2 + ln^2 epsilon) / t_c^2,   eta = -2 m ln(epsilon) / t_c.
+     */
+    struct LinearSpringDashpot
+    {
+      double stiffness;
+      double damping;
+    };
+
+    LinearSpringDashpot
+    linear_spring_dashpot(double epsilon,
+                          double contact_time,
+                          double effective_mass);
+
     double
     lammps_viscoelastic_damping(double dissipative_constant,
                                 double effective_modulus,

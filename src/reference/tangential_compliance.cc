@@ -1,5 +1,7 @@
 #include "reference/tangential_compliance.h"
 
+#include "reference/log_contact_law.h"
+
 #include <cmath>
 
 namespace DiskImpact::Reference
@@ -44,7 +46,7 @@ namespace DiskImpact::Reference
                    const double nu) const override
       {
         return friction_load / M_PI *
-               (q * (2. * std::log(4. / a) + constant(nu)) +
+               (q * (2. * std::log(4. / a) + cattaneo_constant(nu)) +
                 (1. - q) * std::log(1. - q));
       }
 
@@ -53,17 +55,22 @@ namespace DiskImpact::Reference
       {
         return std::sqrt(1. - q);
       }
-
-    private:
-      /// C_I of the rigid motion at the contact point, the centre's
-      /// displacement less R theta_I (docs/theory/tangential-compliance.md).
-      static double
-      constant(const double nu)
-      {
-        return 1. / 12. + 13. * nu / 12. - 2. * std::log(2.);
-      }
     };
   } // namespace
+
+  double
+  cattaneo_constant(const double nu2)
+  {
+    return 1. / 12. + 13. * nu2 / 12. - 2. * std::log(2.);
+  }
+
+  double
+  disk_tangential_stiffness_ratio(const double a, const double nu2)
+  {
+    const double log_term = 2. * std::log(4. / a) - 1.;
+    return (log_term + centre_of_mass_constant(nu2)) /
+           (log_term + cattaneo_constant(nu2));
+  }
 
   std::unique_ptr<TangentialCompliance>
   tangential_compliance(const bool sphere)

@@ -29,6 +29,22 @@ namespace DiskImpact::Reference
     stick_radius(double q) const = 0;
   };
 
+  /**
+   * The disk's initial tangential stiffness dQ/d delta_c over its normal
+   * stiffness dP/d delta_com at the contact half-width @p a (over R), for the
+   * in-plane Poisson ratio @p nu2: both laws are logarithmic,
+   * (2 ln(4/a) + C_com - 1) / (2 ln(4/a) + C_I - 1)
+   * (docs/theory/tangential-compliance.md); the disk's counterpart of
+   * Mindlin's 2(1 - nu)/(2 - nu).
+   */
+  double
+  disk_tangential_stiffness_ratio(double a, double nu2);
+
+  /// C_I of the disk's rigid motion at the contact point, the centre's
+  /// displacement less R theta_I (docs/theory/tangential-compliance.md).
+  double
+  cattaneo_constant(double nu2);
+
   /// Mindlin's sphere (@p sphere) or Cattaneo's disk.
   std::unique_ptr<TangentialCompliance>
   tangential_compliance(bool sphere);

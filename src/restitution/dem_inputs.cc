@@ -119,4 +119,52 @@ namespace DiskImpact
       "\nset friction coefficient particles    = " + mu + "\n";
     return files;
   }
+
+  std::map<std::string, std::string>
+  dem_disk_files(const DiskDemInputs &d)
+  {
+    const bool         sliding = d.friction > 0.;
+    std::ostringstream text;
+    text << "# diskimpact restitution law (SI units, per unit thickness): a "
+            "disk in "
+         << d.plane << " of radius " << ten_digits(d.radius) << " m, density "
+         << ten_digits(d.density) << " kg/m^3, E = " << ten_digits(d.young)
+         << " Pa, nu = " << ten_digits(d.poisson)
+         << ".\n# At the reference speed " << ten_digits(d.speed)
+         << " m/s on a rigid wall (or two such disks at relative speed "
+         << ten_digits(2. * d.speed)
+         << " m/s): epsilon = " << ten_digits(d.epsilon) << ", contact time "
+         << ten_digits(d.contact_time) << " s.\n";
+    if (sliding)
+      text << "# Coulomb friction coefficient mu = " << ten_digits(d.friction)
+           << " (diskimpact's 'Friction coefficient').\n";
+    text << "# LAMMPS in 2D: 'dimension 2', 'atom_style sphere', the disks' "
+            "mass rho pi R^2 per unit\n# thickness with 'set ... density/disc "
+         << ten_digits(d.density)
+         << "', their moment of inertia m R^2/2 with\n# 'fix ... nve/sphere "
+            "disc'. A linear spring-dashpot (hooke k_n eta_n, damping "
+            "velocity)\n# between two such disks: constant epsilon and "
+            "contact time, diskimpact's at the\n# reference speed (the "
+            "elastic disk's law is logarithmic; the linear spring is its "
+            "secant).\n# A rigid wall ('fix wall/gran') takes 2 k_n and 2 "
+            "eta_n.\n";
+    if (sliding)
+      text << "# tangential linear_history: the disk's initial tangential "
+              "stiffness over its normal one,\n# "
+           << ten_digits(d.tangential_ratio)
+           << " at the largest contact half-width of the reference speed, a "
+              "= "
+           << ten_digits(d.half_width)
+           << " R (Cattaneo's disk\n# against the disk's contact law), "
+              "damped as the normal spring (x_gamma_t = 1).\n";
+    text << "pair_style granular\npair_coeff * * hooke "
+         << ten_digits(d.pair.stiffness) << " " << ten_digits(d.pair.damping)
+         << " tangential "
+         << (sliding ? "linear_history " +
+                         ten_digits(d.tangential_ratio * d.pair.stiffness) +
+                         " 1.0 " + ten_digits(d.friction) :
+                       std::string("linear_nohistory 0.0 0.0"))
+         << " damping velocity\n";
+    return {{"lammps_2d.txt", text.str()}};
+  }
 } // namespace DiskImpact

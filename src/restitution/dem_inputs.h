@@ -18,6 +18,24 @@ namespace DiskImpact
     Reference::LinearDashpotCollision yade; ///< ViscElMat's (en, tc)
   };
 
+  /// What a 2D DEM code needs for a disk, per unit thickness, in SI.
+  struct DiskDemInputs
+  {
+    double      radius, density, young, poisson, speed, epsilon, contact_time;
+    std::string plane; ///< "plane strain" or "plane stress"
+    /// The mass per unit thickness, rho pi R^2.
+    double mass;
+    /// The linear spring-dashpot between two such disks (effective mass
+    /// m/2) with epsilon and the contact time of the wall at the
+    /// reference speed; a wall's spring and dashpot are twice these.
+    Reference::LinearSpringDashpot pair;
+    /// The tangential spring over the normal one
+    /// (Reference::disk_tangential_stiffness_ratio() at the largest contact
+    /// half-width of the reference speed) and that half-width over R.
+    double tangential_ratio, half_width;
+    double friction = 0.;
+  };
+
   /**
    * The inputs of the DEM codes for a sphere with the law @p d: file name
    * (liggghts.txt, lammps.txt, yade.py, mercurydpm.txt, lethe.prm) and
@@ -29,6 +47,17 @@ namespace DiskImpact
    */
   std::map<std::string, std::string>
   dem_files(const DemInputs &d);
+
+  /**
+   * The inputs of 2D DEM codes for a disk with the law @p d: lammps_2d.txt,
+   * LAMMPS with 'dimension 2', disks of mass rho pi R^2 per unit thickness
+   * ('set ... density/disc') and moment of inertia m R^2 / 2 ('fix
+   * nve/sphere disc'), a linear spring-dashpot matched to epsilon and the
+   * contact time at the reference speed, with friction a linear tangential
+   * spring with the disk's stiffness ratio.
+   */
+  std::map<std::string, std::string>
+  dem_disk_files(const DiskDemInputs &d);
 
   /// @p value with 10 significant digits.
   std::string

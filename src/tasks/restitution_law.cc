@@ -5,6 +5,8 @@
 #include "impact/impact_estimates.h"
 #include "output/atomic_file.h"
 #include "output/csv_table.h"
+#include "reference/log_contact_law.h"
+#include "reference/tangential_compliance.h"
 #include "restitution/dem_inputs.h"
 #include "restitution/restitution_fit.h"
 #include "run/parameters.h"
@@ -108,6 +110,41 @@ namespace DiskImpact
       return fit;
     }
 
+    /// A disk's DEM inputs at the reference speed @p v_ref (in units of
+    /// c): a linear spring-dashpot with the FE's epsilon and contact time,
+    /// the tangential spring with the disk's stiffness ratio at the largest
+    /// contact half-width, per unit thickness in SI.
+    DiskDemInputs
+    disk_dem_inputs(const Parameters       &parameters,
+                    const RestitutionTable &table,
+                    const double            v_ref,
+                    const double            epsilon_ref)
+    {
+      const UnitSystem &units    = parameters.units;
+      const Material   &material = parameters.material;
+      DiskDemInputs     d;
+      d.radius  = units.length();
+      d.density = units.density();
+      d.young   = units.young_modulus();
+      d.poisson = material.poisson_ratio();
+      d.plane   = material.plane_model_name();
+      d.mass    = d.density * M_PI * d.radius * d.radius;
+      d.speed   = v_ref * units.speed();
+      d.epsilon = epsilon_ref;
+      d.contact_time =
+        interpolate_in_log(table.v, table.contact_time, v_ref) * units.time();
+      d.pair = Reference::linear_spring_dashpot(d.epsilon,
+                                                d.contact_time,
+                                                0.5 * d.mass);
+      // The largest force, in units of E2 R, gives Hertz's half-width.
+      const double force_max =
+        interpolate_in_log(table.v, table.force_max, v_ref);
+      d.half_width       = Reference::hertz_half_width(force_max / M_PI);
+      d.tangential_ratio = Reference::disk_tangential_stiffness_ratio(
+        d.half_width, material.in_plane_poisson_ratio());
+      d.friction = parameters.contact.friction_coefficient();
+      return d;
+    }
   } // namespace
 
   void
@@ -208,7 +245,7 @@ namespace DiskImpact
                      std::abs(theory.epsilon[i] - table.epsilon[i]));
         }
 
-      // The DEM inputs: a sphere, in SI.
+      // The DEM inputs, in SI: a sphere for 3D codes, a disk for 2D ones.
       std::map<std::string, std::string> files;
       std::ostringstream                 dem_json;
       const double                       epsilon_ref = smooth(v_ref);
@@ -249,6 +286,24 @@ namespace DiskImpact
                    << ", \"files\": [\"dem/liggghts.txt\", \"dem/lammps.txt\", "
                       "\"dem/yade.py\", \"dem/mercurydpm.txt\", "
                       "\"dem/lethe.prm\"]}";
+        }
+      else if (units.is_si())
+        {
+          const DiskDemInputs d =
+            disk_dem_inputs(parameters, table, v_ref, epsilon_ref);
+          files = dem_disk_files(d);
+          dem_json << "{\"reference_speed_si\": " << ten_digits(d.speed)
+                   << ", \"epsilon\": " << ten_digits(d.epsilon)
+                   << ", \"contact_time_si\": " << ten_digits(d.contact_time)
+                   << ", \"dimension\": 2, \"mass_per_thickness\": "
+                   << ten_digits(d.mass)
+                   << ", \"pair_stiffness\": " << ten_digits(d.pair.stiffness)
+                   << ", \"pair_damping\": " << ten_digits(d.pair.damping)
+                   << ", \"tangential_stiffness_ratio\": "
+                   << ten_digits(d.tangential_ratio)
+                   << ", \"contact_half_width\": " << ten_digits(d.half_width)
+                   << ", \"friction_coefficient\": " << ten_digits(d.friction)
+                   << ", \"files\": [\"dem/lammps_2d.txt\"]}";
         }
       else
         dem_json << "null";
@@ -314,14 +369,13 @@ namespace DiskImpact
                 << ten_digits(theory_residual)
                 << "\n  at v_ref = " << reference_speed
                 << ": epsilon = " << ten_digits(epsilon_ref) << '\n';
-      if (!files.empty())
-        std::cout << "  DEM inputs in " << directory
-                  << "/dem/ (LIGGGHTS, LAMMPS, Yade, MercuryDPM, Lethe)\n";
+      if (files.empty())
+        std::cout << "  DEM inputs: need 'Units = SI'\n";
       else
-        std::cout << "  DEM inputs: "
-                  << (sphere ? "need 'Units = SI'" :
-                               "written for spheres only (DEM codes are 3D)")
-                  << '\n';
+        std::cout << "  DEM inputs in " << directory
+                  << (sphere ? "/dem/ (LIGGGHTS, LAMMPS, Yade, MercuryDPM, "
+                               "Lethe)\n" :
+                               "/dem/ (LAMMPS in 2D)\n");
     });
   }
 

@@ -1,6 +1,7 @@
 #include "reference/collision_ode.h"
 #include "reference/dem_contact_models.h"
 #include "reference/hertz_impact.h"
+#include "reference/linear_dashpot.h"
 
 #include <catch2/catch.hpp>
 
@@ -87,4 +88,24 @@ TEST_CASE("Yade's ViscElMat: the force-clipped linear spring-dashpot", "[dem]")
       CHECK(inputs.contact_time == Approx(tc).epsilon(1e-12));
     }
   CHECK_THROWS(yade_viscel_inputs(0., 1.));
+}
+
+TEST_CASE("The linear spring-dashpot for a given epsilon and contact time",
+          "[dem]")
+{
+  // Schwager & Pöschel's dashpot, ended at zero overlap, with
+  // beta = eta / 2m and omega0^2 = k / m, must give the inputs back.
+  for (const double epsilon : {0.5, 0.9, 0.9789, 1.})
+    {
+      const double mass = 0.0123, contact_time = 1.5e-6;
+      const auto   law    = linear_spring_dashpot(epsilon, contact_time, mass);
+      const double beta   = law.damping / (2. * mass);
+      const double omega0 = std::sqrt(law.stiffness / mass);
+      CHECK(dashpot_restitution_overlap_criterion(beta, omega0) ==
+            Approx(epsilon).epsilon(1e-13));
+      CHECK(M_PI / std::sqrt(omega0 * omega0 - beta * beta) ==
+            Approx(contact_time).epsilon(1e-13));
+    }
+  CHECK_THROWS(linear_spring_dashpot(0., 1e-6, 1.));
+  CHECK_THROWS(linear_spring_dashpot(0.9, -1e-6, 1.));
 }

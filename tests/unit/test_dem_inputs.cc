@@ -2,6 +2,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <string>
 
 using namespace DiskImpact;
@@ -58,4 +59,35 @@ TEST_CASE("Without friction the DEM inputs are frictionless", "[dem]")
   CHECK(contains(files.at("yade.py"), "et=0., "));
   CHECK(contains(files.at("yade.py"), "frictionAngle=0."));
   CHECK_FALSE(contains(files.at("mercurydpm.txt"), "Sliding"));
+}
+
+namespace
+{
+  /// A steel-like disk's law with the friction coefficient @p mu.
+  DiskDemInputs
+  disk_law(const double mu)
+  {
+    DiskDemInputs d{};
+    d.radius = 1e-3, d.density = 7850., d.young = 2.1e11, d.poisson = 0.3;
+    d.plane = "plane stress", d.speed = 30., d.epsilon = 0.979;
+    d.contact_time = 1.5e-6, d.mass = 7850. * M_PI * 1e-6;
+    d.pair             = {5e10, 350.};
+    d.tangential_ratio = 0.8, d.half_width = 0.1, d.friction = mu;
+    return d;
+  }
+} // namespace
+
+TEST_CASE("A disk's DEM inputs: LAMMPS in 2D with the linear laws", "[dem]")
+{
+  const auto files = dem_disk_files(disk_law(0.1));
+  REQUIRE(files.size() == 1);
+  const std::string &lammps = files.at("lammps_2d.txt");
+  CHECK(contains(lammps, "density/disc 7850"));
+  CHECK(contains(lammps, "nve/sphere disc"));
+  CHECK(contains(lammps,
+                 "pair_coeff * * hooke 5e+10 350 tangential linear_history "
+                 "4e+10 1.0 0.1 damping velocity\n"));
+  CHECK(contains(dem_disk_files(disk_law(0.)).at("lammps_2d.txt"),
+                 "pair_coeff * * hooke 5e+10 350 tangential linear_nohistory "
+                 "0.0 0.0 damping velocity\n"));
 }

@@ -1,3 +1,4 @@
+#include "reference/log_contact_law.h"
 #include "reference/tangential_compliance.h"
 
 #include <catch2/catch.hpp>
@@ -39,4 +40,33 @@ TEST_CASE("Cattaneo's disk: the constant C_I of the independent series",
     }
   // The stick zone c = a sqrt(1 - q).
   CHECK(disk->stick_radius(0.75) == Approx(0.5));
+}
+
+TEST_CASE("The disk's tangential over normal stiffness, from the two laws",
+          "[tangential]")
+{
+  // The slopes of Cattaneo's displacement at q = 0 and of the contact law
+  // for the centre of mass, by central differences, at a = 2 sqrt(x).
+  const auto disk = Reference::tangential_compliance(false);
+  for (const double nu2 : {0.3, 3. / 7.})
+    for (const double x : {1e-4, 2.5e-3, 1e-2})
+      {
+        const double                   a = Reference::hertz_half_width(x);
+        const Reference::LogContactLaw normal(
+          Reference::centre_of_mass_constant(nu2));
+        const double h = 1e-6 * x;
+        // delta / R against P / (pi E2 R): k_n = pi E2 / slope.
+        const double normal_slope =
+          (normal.compression(x + h) - normal.compression(x - h)) / (2. * h);
+        // delta_c / R against q for mu P / (E2 R) = 1: k_t = pi E2 / slope,
+        // one-sided from q = 0, second order.
+        const double dq = 1e-7;
+        const double tangential_slope =
+          M_PI *
+          (4. * disk->displacement(dq, 1., a, nu2) -
+           disk->displacement(2. * dq, 1., a, nu2)) /
+          (2. * dq);
+        CHECK(Reference::disk_tangential_stiffness_ratio(a, nu2) ==
+              Approx(normal_slope / tangential_slope).epsilon(1e-6));
+      }
 }
