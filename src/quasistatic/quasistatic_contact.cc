@@ -7,12 +7,14 @@
 #include "contact/penalty_law.h"
 #include "dynamics/factorization.h"
 #include "elasticity/elasticity_operator.h"
+#include "elasticity/largest_von_mises.h"
 #include "impact/impact_estimates.h"
 #include "impact/impact_mesh.h"
 #include "output/atomic_file.h"
 #include "output/csv_table.h"
 #include "output/state_output.h"
 #include "quasistatic/quasistatic_pair.h"
+#include "reference/hertz_first_yield.h"
 #include "reference/sphere_finite_size.h"
 #include "reference/two_body_contact.h"
 #include "reference/wall_contact_theory.h"
@@ -48,6 +50,21 @@ namespace DiskImpact
     {
       return dynamic_cast<const PenaltyLaw &>(parameters.contact.parsed())
         .penalty_factor();
+    }
+
+    /// Where Hertz's half-space first yields: the sphere on its axis, the
+    /// disk with its out-of-plane stress (nu tr sigma in plane strain, 0
+    /// in plane stress).
+    Reference::FirstYield
+    hertz_first_yield(const Parameters &parameters)
+    {
+      const Material &material = parameters.material;
+      if (parameters.geometry.is_axisymmetric())
+        return Reference::sphere_first_yield(material.poisson_ratio());
+      return Reference::half_plane_first_yield(material.plane_model() ==
+                                                   PlaneModel::plane_strain ?
+                                                 material.poisson_ratio() :
+                                                 0.);
     }
   } // namespace
 
@@ -270,6 +287,21 @@ namespace DiskImpact
       point.h_contact         = h_contact / R;
       point.n_dofs            = op.get_dof_handler().n_dofs();
       point.newton_iterations = iterations;
+
+      // Where the body first yields: the largest von Mises stress against
+      // Hertz's p0 and a.
+      const StressPeak   peak          = largest_von_mises(op.get_mapping(),
+                                                op.get_dof_handler(),
+                                                {parameters.material},
+                                                u);
+      const double       a             = theory->half_width(load) * R;
+      const Point<2>     contact_point = geometry.center() - R * wall.normal;
+      const Tensor<1, 2> offset        = peak.location - contact_point;
+      const double       depth         = offset * wall.normal;
+      point.von_mises_max =
+        peak.von_mises / (theory->pressure(0., load) * pressure_unit());
+      point.von_mises_depth  = depth / a;
+      point.von_mises_offset = (offset - depth * wall.normal).norm() / a;
       return point;
     }
 
@@ -407,6 +439,7 @@ namespace DiskImpact
     const auto         theory =
       Reference::wall_contact_theory(parameters.geometry.is_axisymmetric());
     const std::string symbol = theory->constant_symbol();
+    const Reference::FirstYield hertz_yield = hertz_first_yield(parameters);
 
     CsvTable law({"load",
                   "delta_com",
@@ -421,13 +454,18 @@ namespace DiskImpact
                   "penalty_factor",
                   "h_contact",
                   "n_dofs",
-                  "poisson_ratio_2d"});
+                  "poisson_ratio_2d",
+                  "first_yield_pressure_ratio",
+                  "first_yield_depth",
+                  "first_yield_offset",
+                  "first_yield_pressure_ratio_hertz",
+                  "first_yield_depth_hertz"});
     CsvTable profile({"load", "y", "pressure", "pressure_hertz"});
     std::vector<std::pair<double, std::string>> records;
 
     pcout << "     load        " << symbol << "_com    " << symbol
           << "_diameter   a/a_Hertz-1   force bal.   penetration  Newton   "
-             "DoFs\n";
+             "DoFs   p0/Y first yield\n";
     for (unsigned int i = 0; i < loads.size(); ++i)
       {
         ContactProblem problem(parameters, loads[i], communicator);
@@ -458,6 +496,13 @@ namespace DiskImpact
           law.add(v);
         law.add(p.n_dofs);
         law.add(nu2);
+        // p0 / Y at first yield: the FE's, and Hertz's half-space.
+        for (const double v : {1. / p.von_mises_max,
+                               p.von_mises_depth,
+                               p.von_mises_offset,
+                               hertz_yield.pressure_ratio,
+                               hertz_yield.depth})
+          law.add(v);
 
         // Pressure in units of P / R (disk) or P / R^2 (sphere) against
         // Hertz (Gerl & Zippelius 1999, eq. 46).
@@ -480,9 +525,14 @@ namespace DiskImpact
              << std::scientific << std::setprecision(2) << std::setw(14)
              << p.half_width / a_hertz - 1. << std::setw(13) << p.force_balance
              << std::setw(13) << p.penetration << std::setw(7)
-             << p.newton_iterations << std::setw(9) << p.n_dofs << '\n';
+             << p.newton_iterations << std::setw(9) << p.n_dofs << std::fixed
+             << std::setprecision(4) << std::setw(10) << 1. / p.von_mises_max
+             << " at " << std::setprecision(3) << p.von_mises_depth << " a\n";
         pcout << line.str() << std::flush;
       }
+    pcout << "First yield (von Mises) in Hertz's half-space: p0/Y = "
+          << hertz_yield.pressure_ratio << " at depth " << hertz_yield.depth
+          << " a" << std::endl;
     if (parameters.geometry.is_axisymmetric())
       {
         const auto derived = Reference::sphere_finite_size_constants(

@@ -26,6 +26,10 @@ namespace DiskImpact
     double       h_contact         = 0.; ///< smallest edge face / R
     unsigned int n_dofs            = 0;
     unsigned int newton_iterations = 0;
+    /// The largest von Mises stress over Hertz's peak pressure p0, its
+    /// depth below the contact point and its distance from the axis (over
+    /// Hertz's a): the body first yields where it reaches Y.
+    double von_mises_max = 0., von_mises_depth = 0., von_mises_offset = 0.;
   };
 
   /**
