@@ -19,7 +19,9 @@ namespace DiskImpact
   largest_von_mises(const Mapping<2>                 &mapping,
                     const DoFHandler<2>              &dof_handler,
                     const std::vector<Material>      &materials,
-                    const PETScWrappers::MPI::Vector &u)
+                    const PETScWrappers::MPI::Vector &u,
+                    const Point<2>                   &center,
+                    const double                      reach)
   {
     const auto         models = section_stress_models(materials);
     const QIterated<2> quadrature(QGauss<1>(2), 3);
@@ -36,7 +38,9 @@ namespace DiskImpact
                                      std::vector<Tensor<1, 2>>(components));
     StressPeak peak;
     for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
+      if (cell->is_locally_owned() &&
+          (reach <= 0. ||
+           cell->center().distance(center) <= reach + cell->diameter()))
         {
           fe_values.reinit(cell);
           fe_values.get_function_values(u, inputs.solution_values);

@@ -2,8 +2,10 @@
 
 #include "base/peak_memory.h"
 #include "base/run_error.h"
+#include "elasticity/largest_von_mises.h"
 #include "elasticity/rotation_field.h"
 #include "impact/impact_estimates.h"
+#include "impact/impact_mesh.h"
 #include "output/atomic_file.h"
 #include "output/hdf5_output.h"
 #include "output/state_output.h"
@@ -171,6 +173,7 @@ namespace DiskImpact
     summary.wall_time_loop =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
         .count();
+    record_stress_peak();
     finish();
     check_result();
     snapshot();
@@ -512,7 +515,43 @@ namespace DiskImpact
                                mean_rotation(v) * radius / velocity_unit})
       series.add(value);
     summary.delta_max = std::max(summary.delta_max, -x_com);
+    if (force > summary.force_max)
+      {
+        // The state of the largest force, where the contact's stress peaks.
+        largest_force_displacement = stepper->displacement();
+        largest_force_half_width   = step.half_width();
+      }
     summary.force_max = std::max(summary.force_max, force);
+  }
+
+  template <int dim>
+  void
+  ImpactSimulation<dim>::record_stress_peak()
+  {
+    if constexpr (dim == 2)
+      {
+        // A Hertz contact yields below its centre, at depth 0.5a ... 0.8a:
+        // the cells within three half-widths of the contact point (and the
+        // contact's drift along the edge) hold the peak.
+        if (largest_force_half_width <= 0.)
+          return;
+        const auto    &geometry = parameters.geometry;
+        const Point<2> contact  = geometry.contact_point();
+        const double   reach =
+          3. * largest_force_half_width + contact_drift(parameters);
+        const StressPeak peak =
+          largest_von_mises(op.get_mapping(),
+                            op.get_dof_handler(),
+                            ImpactOperatorsBase::materials(parameters),
+                            op.create_ghosted(largest_force_displacement),
+                            contact,
+                            reach);
+        summary.von_mises_max =
+          peak.von_mises / parameters.material.in_plane_young_modulus();
+        summary.von_mises_depth =
+          std::abs((peak.location - contact) * (geometry.center() - contact)) /
+          (radius * radius);
+      }
   }
 
   template <int dim>

@@ -65,6 +65,10 @@ namespace DiskImpact
     /// Append the state after a step to the time series.
     void
     record(double time, const ContactState &state);
+    /// The largest von Mises stress near the contact in the state of the
+    /// largest force (2D models).
+    void
+    record_stress_peak();
     /// Whether the collision has ended and the margin after it passed.
     bool
     collision_over();
@@ -172,6 +176,9 @@ namespace DiskImpact
     bool                               tracks_rotation = false;
     dealii::Point<dim>                 rotation_center;
     dealii::PETScWrappers::MPI::Vector tangent_momentum, rotation_momentum;
+    /// The displacement and the contact's half-width at the largest force.
+    dealii::PETScWrappers::MPI::Vector largest_force_displacement;
+    double                             largest_force_half_width = 0.;
     double                             tangent_mass = 0., inertia = 0.;
     double v_tangent_initial = 0., spin_initial = 0.;
     /// The wall's tangential and angular impulses so far, and the energy

@@ -53,7 +53,9 @@ namespace DiskImpact
                     "friction_work",
                     "rotation_in_contact",
                     "tangential_impulse_error",
-                    "angular_impulse_error"});
+                    "angular_impulse_error",
+                    "von_mises_max",
+                    "von_mises_depth"});
     table.start_row();
     for (const double value : {s.velocity,
                                s.epsilon,
@@ -97,7 +99,9 @@ namespace DiskImpact
                                o.friction_work,
                                o.rotation_in_contact,
                                o.tangential_impulse_error,
-                               o.angular_impulse_error})
+                               o.angular_impulse_error,
+                               s.von_mises_max,
+                               s.von_mises_depth})
       table.add(value);
     return table;
   }

@@ -64,6 +64,10 @@ namespace DiskImpact
     double       contact_time      = 0.; ///< [R / c]
     double       delta_max         = 0.; ///< largest centre-of-mass approach
     double       force_max         = 0.; ///< largest force / (E2 R)
+    /// The largest von Mises stress near the contact at the largest force
+    /// (over E2; 2D models) and its depth below the contact point [R]:
+    /// the body first yields where it reaches Y.
+    double       von_mises_max = 0., von_mises_depth = 0.;
     double       energy_error      = 0.; ///< max |E(t) - E(0)| / E(0)
     double       impulse_error     = 0.; ///< |m dv - sum F dt| / (m v_i)
     unsigned int steps             = 0;

@@ -1,3 +1,4 @@
+#include "base/input_error.h"
 #include "base/run_error.h"
 #include "impact/impact_estimates.h"
 #include "impact/impact_mesh.h"
@@ -77,8 +78,13 @@ namespace DiskImpact
           << "  delta_max = " << s.delta_max << " R (" << model << ": "
           << s.one_dof_delta_max << ")\n"
           << "  force_max = " << s.force_max << (sphere ? " E* R^2" : " E2 R")
-          << "\n"
-          << (sphere ? "  Ramírez et al.'s u = (v / g*)^(1/5) = " :
+          << "\n";
+      if (parameters.geometry.dimension() == 2)
+        out << "  largest von Mises stress = " << s.von_mises_max
+            << (sphere ? " E*" : " E2") << " at depth " << s.von_mises_depth
+            << " R below the contact point (first yield where it reaches "
+               "Y)\n";
+      out << (sphere ? "  Ramírez et al.'s u = (v / g*)^(1/5) = " :
                        "  Schwager's alpha = tau sqrt(pi E2 / m) = ")
           << (sphere ? s.ramirez_u : s.schwager_alpha) << "\n"
           << "  energy error = " << s.energy_error
@@ -103,12 +109,22 @@ namespace DiskImpact
         print_oblique(s, out);
       const UnitSystem &units = parameters.units;
       if (units.is_si())
-        out << "  in SI: v = " << parameters.impact.velocity() * units.speed()
-            << " m/s, epsilon = " << s.epsilon
-            << ", contact time = " << s.contact_time * units.time()
-            << " s, delta_max = " << s.delta_max * units.length()
-            << " m, force_max = " << s.force_max * units.force() << ' '
-            << units.force_name() << "\n";
+        out
+          << "  in SI: v = " << parameters.impact.velocity() * units.speed()
+          << " m/s, epsilon = " << s.epsilon
+          << ", contact time = " << s.contact_time * units.time()
+          << " s, delta_max = " << s.delta_max * units.length()
+          << " m, force_max = " << s.force_max * units.force() << ' '
+          << units.force_name()
+          << (parameters.geometry.dimension() == 2 ?
+                ", largest von Mises stress = " +
+                  approximately(s.von_mises_max * units.young_modulus() *
+                                  parameters.material.in_plane_young_modulus() /
+                                  parameters.material.young_modulus(),
+                                8) +
+                  " Pa" :
+                std::string())
+          << "\n";
       pcout << out.str();
     }
   } // namespace
