@@ -9,6 +9,7 @@ Runs task 'sweep' on 2 ranks over the angles of incidence --angles
   --body sphere: the half sphere in 3D, nu = --poisson, Q2, the mesh of
                  tests/regression/impact_oblique_sphere.prm; 10 angles from
                  5 to 65 by default.
+Both with time steps of t_c/100 ('Time step fraction' 0.01).
 Prints a Markdown table with, per angle:
   v_n = speed cos(angle), the normal speed;
   psi1 = 2 v_cp / (mu (1 + eps) v_n), the contact point's normalised
@@ -66,6 +67,9 @@ def sweep(diskimpact, work, body, mu, speed, angles, poisson):
                 "end\n"
                 "subsection Material\n"
                 f"  set Poisson ratio = {poisson}\n"
+                "end\n"
+                "subsection Time stepping\n"
+                "  set Time step fraction = 0.01\n"
                 "end\n"
                 "subsection Impact\n"
                 f"  set Velocities = {speed}\n"
