@@ -41,7 +41,6 @@ import csv
 import json
 import math
 import os
-import re
 import shutil
 import subprocess
 import sys
@@ -75,14 +74,7 @@ def main():
     scales = law["si_scales"]
     radius = scales["R_m"]
     dimension = law["dem"].get("dimension", 3)
-    snippet_of = ({"lammps": "lammps_2d.txt"} if dimension == 2 else
-                  {"liggghts": "liggghts.txt", "lammps": "lammps.txt",
-                   "yade": "yade.py"})
-    density = float(re.search(
-        r"\bdensity(?:/disc)? (\S+)",
-        open(os.path.join(args.directory, "dem",
-                          snippet_of["lammps" if dimension == 2 else
-                                     "liggghts"])).read()).group(1).rstrip("'"))
+    density = float(law["parameters"]["Material"]["Density"])  # kg/m^3
     v_ref = law["dem"]["reference_speed_si"]
     table = [(float(r["speed_si"]), float(r["epsilon"]),
               float(r["contact_time_si"])) for r in rows]

@@ -515,12 +515,14 @@ namespace DiskImpact
                                mean_rotation(v) * radius / velocity_unit})
       series.add(value);
     summary.delta_max = std::max(summary.delta_max, -x_com);
-    if (force > summary.force_max)
-      {
-        // The state of the largest force, where the contact's stress peaks.
-        largest_force_displacement = stepper->displacement();
-        largest_force_half_width   = step.half_width();
-      }
+    // The state of the largest force, where the contact's stress peaks
+    // (record_stress_peak(), 2D models).
+    if constexpr (dim == 2)
+      if (force > summary.force_max)
+        {
+          largest_force_displacement = stepper->displacement();
+          largest_force_half_width   = step.half_width();
+        }
     summary.force_max = std::max(summary.force_max, force);
   }
 

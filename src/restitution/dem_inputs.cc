@@ -14,22 +14,60 @@ namespace DiskImpact
     return text.str();
   }
 
+  namespace
+  {
+    /// What every DEM file's header states, in SI.
+    struct LawFacts
+    {
+      double radius, density, young, poisson, speed, epsilon, contact_time,
+        friction;
+    };
+
+    /// The facts of a sphere's (DemInputs) or a disk's (DiskDemInputs) law.
+    template <typename Inputs>
+    LawFacts
+    facts_of(const Inputs &d)
+    {
+      return {d.radius,
+              d.density,
+              d.young,
+              d.poisson,
+              d.speed,
+              d.epsilon,
+              d.contact_time,
+              d.friction};
+    }
+
+    /// The header: the particle, epsilon and the contact time at the
+    /// reference speed, and mu if the contact has friction.
+    std::string
+    law_header(const std::string &units,
+               const std::string &body,
+               const std::string &bodies,
+               const LawFacts    &f)
+    {
+      std::ostringstream head;
+      head << "# diskimpact restitution law (" << units << "): " << body
+           << " of radius " << ten_digits(f.radius) << " m, density "
+           << ten_digits(f.density) << " kg/m^3, E = " << ten_digits(f.young)
+           << " Pa, nu = " << ten_digits(f.poisson)
+           << ".\n# At the reference speed " << ten_digits(f.speed)
+           << " m/s on a rigid wall (or two such " << bodies
+           << " at relative speed " << ten_digits(2. * f.speed)
+           << " m/s): epsilon = " << ten_digits(f.epsilon) << ", contact time "
+           << ten_digits(f.contact_time) << " s.\n";
+      if (f.friction > 0.)
+        head << "# Coulomb friction coefficient mu = " << ten_digits(f.friction)
+             << " (diskimpact's 'Friction coefficient').\n";
+      return head.str();
+    }
+  } // namespace
+
   std::map<std::string, std::string>
   dem_files(const DemInputs &d)
   {
     std::ostringstream head;
-    head << "# diskimpact restitution law (SI units): a sphere of radius "
-         << ten_digits(d.radius) << " m, density " << ten_digits(d.density)
-         << " kg/m^3, E = " << ten_digits(d.young)
-         << " Pa, nu = " << ten_digits(d.poisson)
-         << ".\n# At the reference speed " << ten_digits(d.speed)
-         << " m/s on a rigid wall (or two such spheres at relative speed "
-         << ten_digits(2. * d.speed)
-         << " m/s): epsilon = " << ten_digits(d.epsilon) << ", contact time "
-         << ten_digits(d.contact_time) << " s.\n";
-    if (d.friction > 0.)
-      head << "# Coulomb friction coefficient mu = " << ten_digits(d.friction)
-           << " (diskimpact's 'Friction coefficient').\n";
+    head << law_header("SI units", "a sphere", "spheres", facts_of(d));
     const std::string                  mu      = ten_digits(d.friction);
     const bool                         sliding = d.friction > 0.;
     std::map<std::string, std::string> files;
@@ -125,19 +163,10 @@ namespace DiskImpact
   {
     const bool         sliding = d.friction > 0.;
     std::ostringstream text;
-    text << "# diskimpact restitution law (SI units, per unit thickness): a "
-            "disk in "
-         << d.plane << " of radius " << ten_digits(d.radius) << " m, density "
-         << ten_digits(d.density) << " kg/m^3, E = " << ten_digits(d.young)
-         << " Pa, nu = " << ten_digits(d.poisson)
-         << ".\n# At the reference speed " << ten_digits(d.speed)
-         << " m/s on a rigid wall (or two such disks at relative speed "
-         << ten_digits(2. * d.speed)
-         << " m/s): epsilon = " << ten_digits(d.epsilon) << ", contact time "
-         << ten_digits(d.contact_time) << " s.\n";
-    if (sliding)
-      text << "# Coulomb friction coefficient mu = " << ten_digits(d.friction)
-           << " (diskimpact's 'Friction coefficient').\n";
+    text << law_header("SI units, per unit thickness",
+                       "a disk in " + d.plane,
+                       "disks",
+                       facts_of(d));
     text << "# LAMMPS in 2D: 'dimension 2', 'atom_style sphere', the disks' "
             "mass rho pi R^2 per unit\n# thickness with 'set ... density/disc "
          << ten_digits(d.density)
