@@ -2,7 +2,7 @@
 
     xvfb-run -a pvbatch postprocess/render_impact.py OUTPUT_DIR [-o out.png]
         [--field von_mises] [--time T] [--warp-scale 1] [--range MIN MAX]
-        [--size 800 600] [--pvd impact.pvd]
+        [--size 800 600] [--zoom H] [--pvd impact.pvd]
 
 Loads OUTPUT_DIR/impact.pvd (task impact; --pvd contact.pvd for task
 quasistatic contact), picks the snapshot nearest to T (default: the one with
@@ -12,7 +12,10 @@ filter (the y components of vectors and the xy components of tensors change
 sign; a full disk is left as it is), warps it by the displacement times the
 scale factor, colours it by the field and saves a PNG with a colour bar and
 the time in the title. The rigid wall is drawn as a black line (not with a
-partner body, subsection Partner: both bodies are in the PVD).
+partner body, subsection Partner: both bodies are in the PVD). An
+elastic-plastic body's cell fields equivalent_plastic_strain and
+von_mises_stress can be shown; --zoom H shows the square of half-size H R
+next to the contact.
 
 Units: a dimensionless run's .vtu files hold the values in the units of the
 parameter file; the colour bar shows stresses over E2 and the displacement
@@ -50,6 +53,9 @@ FIELDS = {
     "principal_stress_2": ("smallest principal stress", "stress"),
     "pressure": ("pressure -tr(sigma)/3", "stress"),
     "displacement": ("displacement magnitude", "length"),
+    # An elastic-plastic body's cell fields.
+    "equivalent_plastic_strain": ("equivalent plastic strain", "strain"),
+    "von_mises_stress": ("von Mises stress", "stress"),
 }
 
 
@@ -68,7 +74,7 @@ def parse_arguments():
                         "shown (units of the .pvd: R/c for impact.pvd, s "
                         "for an SI run); "
                         "default the snapshot with the largest von Mises "
-                        "stress")
+                        "stress (an elastic-plastic body's: the last)")
     parser.add_argument("--warp-scale", type=float, default=1.0,
                         help="displacement scale factor (default 1: the "
                         "true deformed disk; the displacement includes the "
@@ -81,6 +87,10 @@ def parse_arguments():
     parser.add_argument("--size", type=int, nargs=2, default=[800, 600],
                         metavar=("WIDTH", "HEIGHT"),
                         help="image size in pixels (default 800 600)")
+    parser.add_argument("--zoom", type=float,
+                        help="show the square of half-size ZOOM R about "
+                        "the wall point (the contact) instead of the whole "
+                        "body")
     parser.add_argument("--pvd", default="impact.pvd",
                         help="the .pvd file in OUTPUT_DIR (default "
                         "impact.pvd; contact.pvd has the same fields)")
@@ -126,6 +136,8 @@ def run_constants(output_dir):
 def field_maximum(source, name, time):
     source.UpdatePipeline(time)
     array = source.GetPointDataInformation().GetArray(name)
+    if array is None:  # an elastic-plastic body writes no von_mises
+        return time
     return array.GetRange(-1 if array.GetNumberOfComponents() > 1 else 0)[1]
 
 
@@ -159,7 +171,9 @@ def main():
 
     constants = run_constants(args.output_dir)
     label, kind = FIELDS[args.field]
-    if constants is None:
+    if kind == "strain":
+        scale, unit = 1.0, "as written"
+    elif constants is None:
         scale, unit = 1.0, "as written"  # no "/ unit" in the colour bar
     elif constants["si"]:
         scale, unit = 1.0, "Pa" if kind == "stress" else "m"
@@ -209,7 +223,7 @@ def main():
     display.SetScalarBarVisibility(view, True)
     bar = GetScalarBar(lut, view)
     bar.Title = (args.field if unit == "as written" else
-                 f"{args.field} [{unit}]" if constants["si"] else
+                 f"{args.field} [{unit}]" if constants and constants["si"] else
                  f"{args.field} / {unit}")
     bar.ComponentTitle = ""
     bar.TitleColor = bar.LabelColor = [0.0, 0.0, 0.0]
@@ -249,6 +263,12 @@ def main():
     view.CameraViewUp = [0.0, 1.0, 0.0]
     view.ResetCamera()
     view.CameraParallelScale *= 1.04
+    if args.zoom and constants is not None:
+        (px, py) = constants["wall_point"]
+        half = args.zoom * constants["R"]
+        view.CameraFocalPoint = [px + half, py, 0.0]
+        view.CameraPosition = [px + half, py, 1.0]
+        view.CameraParallelScale = half
 
     output = args.output or os.path.join(
         args.output_dir,

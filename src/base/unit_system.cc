@@ -65,9 +65,11 @@ namespace DiskImpact
       "c = sqrt(E2/rho), results in units of R, R/c and E2 R (disk) or "
       "E* R^2 (sphere). 'SI': a real particle, for the impact tasks: "
       "'Radius' [m], 'Young modulus' [Pa], 'Density' [kg/m^3], 'Relaxation "
-      "time' and 'Relaxation times' [s], viscosities [Pa s], 'Wall point' "
-      "[m], 'Time step' [s], speeds ('Velocity', 'Velocities', 'Reference "
-      "speed') [m/s], 'Spin' [rad/s]; the run prints SI and dimensionless results.");
+      "time' and 'Relaxation times' [s], viscosities [Pa s], 'Yield stress' "
+      "and 'Hardening modulus' [Pa], 'Wall point' [m], 'Time step' [s], speeds "
+      "('Velocity', 'Velocities', 'Reference "
+      "speed') [m/s], 'Spin' [rad/s]; the run prints SI and dimensionless "
+      "results.");
   }
 
   void
@@ -120,6 +122,8 @@ namespace DiskImpact
     divide(prm, "Material", "Relaxation time", own_time);
     divide(prm, "Material", "Shear viscosity", young_si * own_time);
     divide(prm, "Material", "Bulk viscosity", young_si * own_time);
+    divide(prm, "Material", "Yield stress", young_si);
+    divide(prm, "Material", "Hardening modulus", young_si);
     divide(prm, "Contact", "Wall point", length_scale);
     divide(prm, "Time stepping", "Time step", own_time);
     divide(prm, "Impact", "Velocity", speed_scale);

@@ -6,36 +6,49 @@ namespace DiskImpact
 {
   using namespace dealii;
 
-  AndersonAcceleration::AndersonAcceleration(const unsigned int depth)
+  template <typename VectorType>
+  AndersonAcceleration<VectorType>::AndersonAcceleration(
+    const unsigned int depth)
       : depth(depth)
   {
   }
 
-  Vector<double>
-  AndersonAcceleration::next(const Vector<double> &x, const Vector<double> &f)
+  template <typename VectorType>
+  VectorType
+  AndersonAcceleration<VectorType>::next(const VectorType &x,
+                                         const VectorType &f)
   {
-    xs.push_back(x);
-    fs.push_back(f);
-    if (xs.size() > depth + 1)
+    if (last_x.size() > 0 && depth > 0)
       {
-        xs.erase(xs.begin());
-        fs.erase(fs.begin());
+        // The newest differences, and their row of the Gram matrix.
+        if (dF.size() == depth)
+          {
+            dX.erase(dX.begin());
+            dF.erase(dF.begin());
+            gram.erase(gram.begin());
+            for (auto &row : gram)
+              row.erase(row.begin());
+          }
+        dX.push_back(x);
+        dX.back() -= last_x;
+        dF.push_back(f);
+        dF.back() -= last_f;
+        std::vector<double> row(dF.size());
+        for (unsigned int j = 0; j < dF.size(); ++j)
+          row[j] = dF.back() * dF[j];
+        for (unsigned int j = 0; j + 1 < dF.size(); ++j)
+          gram[j].push_back(row[j]);
+        gram.push_back(row);
       }
-    const unsigned int m = xs.size() - 1;
-    Vector<double>     result(x);
+    last_x = x;
+    last_f = f;
+    VectorType result(x);
     result += f;
+    const unsigned int m = dF.size();
     if (m == 0)
       return result;
-    // gamma minimizes |f - dF gamma|, dF_j = f_{j+1} - f_j, by the normal
-    // equations (m <= depth is small), slightly regularized.
-    std::vector<Vector<double>> dF(m), dX(m);
-    for (unsigned int j = 0; j < m; ++j)
-      {
-        dF[j] = fs[j + 1];
-        dF[j] -= fs[j];
-        dX[j] = xs[j + 1];
-        dX[j] -= xs[j];
-      }
+    // gamma minimizes |f - dF gamma| by the normal equations (m <= depth
+    // is small), slightly regularized.
     LAPACKFullMatrix<double> normal(m, m);
     Vector<double>           gamma(m);
     double                   trace = 0.;
@@ -43,7 +56,7 @@ namespace DiskImpact
       {
         gamma[i] = dF[i] * f;
         for (unsigned int j = 0; j < m; ++j)
-          normal(i, j) = dF[i] * dF[j];
+          normal(i, j) = gram[i][j];
         trace += normal(i, i);
       }
     if (!(trace > 0.))
@@ -59,4 +72,7 @@ namespace DiskImpact
       }
     return result;
   }
+
+  template class AndersonAcceleration<Vector<double>>;
+  template class AndersonAcceleration<PETScWrappers::MPI::Vector>;
 } // namespace DiskImpact

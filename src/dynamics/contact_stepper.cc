@@ -72,6 +72,15 @@ namespace DiskImpact
   }
 
   template <int dim>
+  void
+  ContactStepper<dim>::enable_plasticity(PlasticStrainField<dim> &field)
+  {
+    plasticity          = &field;
+    plastic_force       = op.create_vector();
+    trial_plastic_force = op.create_vector();
+  }
+
+  template <int dim>
   Vector<double>
   ContactStepper<dim>::on_contact(const Vector<double> &values_on_D,
                                   const double          angle) const
@@ -151,6 +160,12 @@ namespace DiskImpact
         factorize(0.5 * dt);
       }
     complete_step();
+    if (plasticity)
+      {
+        result.plastic_work    = plasticity->accept();
+        previous_plastic_force = plastic_force;
+        plastic_force          = trial_plastic_force;
+      }
     // Friction: each point's traction and slip at the step's end.
     if (zone.has_friction())
       zone.accept_step(on_contact(u_D, theta),
@@ -211,6 +226,60 @@ namespace DiskImpact
         op.damping_matrix().vmult(product, work);
         b.add(-1., product);
       }
+    return plasticity ? attempt_plastic_step() : attempt_contact_step();
+  }
+
+  template <int dim>
+  bool
+  ContactStepper<dim>::attempt_plastic_step()
+  {
+    // u1 is linear in the load (1 - af) f_p given the contact, so each
+    // iterate costs one solve with the elastic factorization and a contact
+    // solve; the return mapping at u1 gives the next f_p. (Perfect
+    // plasticity makes the fixed point slow to contract: a deep history.)
+    const PETScWrappers::MPI::Vector base = b;
+    PETScWrappers::MPI::Vector       x    = plastic_force;
+    // The start: f_p extrapolated linearly from the last two steps.
+    if (previous_plastic_force.size() == x.size())
+      x.sadd(2., -1., previous_plastic_force);
+    AndersonAcceleration<PETScWrappers::MPI::Vector> acceleration(15);
+    for (unsigned int k = 1;; ++k)
+      {
+        b = base;
+        b.add(integrator.stiffness_coefficient(), x);
+        if (!attempt_contact_step())
+          return false;
+        // The return mapping: on all cells first, then on the cells near
+        // yield; a step ends with one on all cells.
+        plasticity->evaluate(u_new, trial_plastic_force, k == 1);
+        PETScWrappers::MPI::Vector change = trial_plastic_force;
+        change -= x;
+        const auto converged = [&]() {
+          return change.l2_norm() <=
+                 integrator.plastic_tolerance() *
+                   std::max(trial_plastic_force.l2_norm(), x.l2_norm());
+        };
+        if (k > 1 && converged())
+          {
+            plasticity->evaluate(u_new, trial_plastic_force, true);
+            change = trial_plastic_force;
+            change -= x;
+          }
+        if (converged())
+          {
+            plastic_iterations += k;
+            return true;
+          }
+        if (k == integrator.max_plastic_iterations())
+          return false;
+        x = acceleration.next(x, change);
+      }
+  }
+
+  template <int dim>
+  bool
+  ContactStepper<dim>::attempt_contact_step()
+  {
     // The response without contact force y: one solve with the factorized
     // matrix, into u_new. The end state is y + X P(u1_C): a dense system
     // on C.
@@ -236,7 +305,7 @@ namespace DiskImpact
     Vector<double>       P;
     Vector<double>       applied(zone.n_points());
     Vector<double>       y_D_corrected = y_D;
-    AndersonAcceleration acceleration(5);
+    AndersonAcceleration<> acceleration(5);
     for (unsigned int pass = 0;; ++pass)
       {
         if (!attempt_constrained_step(y_D_corrected, u1_D, P))
@@ -481,17 +550,21 @@ namespace DiskImpact
         // K u_new with u_new's constrained entries zeroed.
         constraint_map.zeroed(u_new, work);
         op.stiffness_matrix().vmult(stiffness_u, work);
-        return;
       }
-    // The step solved A u1 = b + E_C P with A = cK K + cM M, so in the
-    // unconstrained rows K u1 = (b + E_C P - cM M u1) / cK: no product
-    // with K. (The constrained rows, which differ, are zeroed in u where
-    // it meets them and kept to themselves by the solve.)
-    stiffness_u = b;
-    if (contact_force.size() > 0)
-      solver->add_forces(contact_force, stiffness_u);
-    stiffness_u.add(-integrator.mass_coefficient(dt), mass_u_new);
-    stiffness_u /= integrator.stiffness_coefficient();
+    else
+      {
+        // The step solved A u1 = b + E_C P with A = cK K + cM M, so in the
+        // unconstrained rows K u1 = (b + E_C P - cM M u1) / cK: no product
+        // with K. (The constrained rows, which differ, are zeroed in u where
+        // it meets them and kept to themselves by the solve.)
+        stiffness_u = b;
+        if (contact_force.size() > 0)
+          solver->add_forces(contact_force, stiffness_u);
+        stiffness_u.add(-integrator.mass_coefficient(dt), mass_u_new);
+        stiffness_u /= integrator.stiffness_coefficient();
+      }
+    if (plasticity)
+      stiffness_u -= trial_plastic_force;
   }
 
   template <int dim>
@@ -511,6 +584,27 @@ namespace DiskImpact
     // K u of the current state with the new K.
     constraint_map.zeroed(u, work);
     op.stiffness_matrix().vmult(stiffness_u, work);
+    if (plasticity)
+      stiffness_u -= plastic_force;
+  }
+
+  template <int dim>
+  double
+  ContactStepper<dim>::strain_energy() const
+  {
+    constraint_map.zeroed(u, work);
+    double energy = 0.5 * (work * stiffness_u);
+    if (plasticity)
+      energy +=
+        plasticity->plastic_strain_energy() - 0.5 * (work * plastic_force);
+    return energy;
+  }
+
+  template <int dim>
+  unsigned int
+  ContactStepper<dim>::n_plastic_iterations() const
+  {
+    return plastic_iterations;
   }
 
   template <int dim>

@@ -10,6 +10,7 @@
 #include "elasticity/constraint_map.h"
 #include "elasticity/elasticity_operator.h"
 #include "elasticity/interleaved_mass.h"
+#include "elasticity/plastic_strain_field.h"
 
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/petsc_vector.h>
@@ -58,6 +59,8 @@ namespace DiskImpact
       /// The viscous work of the step, dt v^T D v at the damping's
       /// velocity (zero without damping).
       double viscous_work = 0.;
+      /// The plastic work of the step (enable_plasticity(), else zero).
+      double plastic_work = 0.;
     };
 
     /**
@@ -88,6 +91,18 @@ namespace DiskImpact
     void
     track_rotation(const dealii::PETScWrappers::MPI::Vector &rotation_field,
                    const dealii::PETScWrappers::MPI::Vector &rotation_momentum);
+
+    /**
+     * An elastic-plastic body: the internal force is K u - f_p with the
+     * plastic strain's force f_p of @p field. Each step solves the fixed
+     * point f_p = F(u1(f_p)) (u1 the step's end state with the load
+     * (1 - af) f_p, one solve and a contact solve with the elastic
+     * factorization; F the return mapping at u1), by Anderson's acceleration
+     * from f_p extrapolated from the last two steps, to 'Plastic
+     * tolerance'. Call before start().
+     */
+    void
+    enable_plasticity(PlasticStrainField<dim> &field);
 
     /// Start from rest (u = a = 0) with the velocity @p velocity (its
     /// constraints satisfied) and factorize for the step @p dt.
@@ -120,6 +135,14 @@ namespace DiskImpact
     mass_times_velocity() const;
     const dealii::PETScWrappers::MPI::Vector &
     stiffness_times_displacement() const;
+    /// The elastic strain energy of the current state: u . (K u) / 2, less
+    /// u . f_p and plus int eps_p : C : eps_p dV / 2 for an elastic-plastic
+    /// body (its elastic strain's energy).
+    double
+    strain_energy() const;
+    /// Plastic iterations of all steps so far (enable_plasticity()).
+    unsigned int
+    n_plastic_iterations() const;
 
     /// Newton (or complementarity) iterations of all steps so far.
     unsigned int
@@ -149,6 +172,13 @@ namespace DiskImpact
     /// fails.
     bool
     attempt_step();
+    /// The step's solve with the right-hand side b, then its contact solve.
+    bool
+    attempt_contact_step();
+    /// attempt_step() for an elastic-plastic body: the plastic fixed point
+    /// around attempt_contact_step().
+    bool
+    attempt_plastic_step();
     /// attempt_step() for a penalty-type law: Newton on C.
     bool
     attempt_penalty_step(const dealii::Vector<double> &y_D);
@@ -201,9 +231,16 @@ namespace DiskImpact
 
     StateVector                        u, v, a, u_new, v_new, a_new;
     dealii::PETScWrappers::MPI::Vector b;
-    /// K u of the current state: for the strain energy and the next step's
-    /// right-hand side.
+    /// K u of the current state (K u - f_p for an elastic-plastic body):
+    /// for the strain energy and the next step's right-hand side.
     dealii::PETScWrappers::MPI::Vector stiffness_u;
+    /// enable_plasticity(): the field, f_p of its accepted states, of its
+    /// last trial states and of the step before, the plastic iterations so
+    /// far.
+    PlasticStrainField<dim>           *plasticity = nullptr;
+    dealii::PETScWrappers::MPI::Vector plastic_force, trial_plastic_force,
+      previous_plastic_force;
+    unsigned int plastic_iterations = 0;
     /// The last step's contact force P on C (laws other than 'constraint').
     dealii::Vector<double> contact_force;
     /// M u, M v, M a (constrained entries zeroed) and their new values:

@@ -66,6 +66,17 @@ namespace DiskImpact
                       "balance is its accuracy check). Every scheme: the "
                       "largest growth of the total energy (energy created "
                       "by an unstable step) [-].");
+    prm.declare_entry("Plastic tolerance",
+                      "1e-6",
+                      Patterns::Double(1e-15, 1e-2),
+                      "Elastic-plastic bodies: a step's plastic iteration "
+                      "stops when the plastic strain's force changes by at "
+                      "most this times its size (l2 norms) [-].");
+    prm.declare_entry("Maximum plastic iterations",
+                      "200",
+                      Patterns::Integer(1, 10000),
+                      "Elastic-plastic bodies: plastic iterations per step "
+                      "before the step is cut.");
     prm.declare_entry("Maximum step cuts",
                       "4",
                       Patterns::Integer(0, 20),
@@ -90,6 +101,8 @@ namespace DiskImpact
     tolerance           = prm.get_double("Newton tolerance");
     max_iterations      = prm.get_integer("Maximum Newton iterations");
     n_step_cuts         = prm.get_integer("Maximum step cuts");
+    plastic_tol         = prm.get_double("Plastic tolerance");
+    max_plastic         = prm.get_integer("Maximum plastic iterations");
     energy_tolerance    = prm.get_double("Energy tolerance");
     prm.leave_subsection();
   }
@@ -117,6 +130,18 @@ namespace DiskImpact
   TimeIntegrator::max_newton_iterations() const
   {
     return max_iterations;
+  }
+
+  double
+  TimeIntegrator::plastic_tolerance() const
+  {
+    return plastic_tol;
+  }
+
+  unsigned int
+  TimeIntegrator::max_plastic_iterations() const
+  {
+    return max_plastic;
   }
 
   unsigned int

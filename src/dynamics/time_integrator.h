@@ -58,6 +58,11 @@ namespace DiskImpact
     max_newton_iterations() const;
     unsigned int
     max_step_cuts() const;
+    /// The plastic iteration's relative tolerance and iteration limit.
+    double
+    plastic_tolerance() const;
+    unsigned int
+    max_plastic_iterations() const;
     /// Throw an InputError unless a fixed 'Time step' lies within the
     /// range 'Time step fraction' allows, relative to
     /// @p contact_time_estimate.
@@ -144,6 +149,8 @@ namespace DiskImpact
     double         tolerance           = 1e-13;
     unsigned int   max_iterations      = 30;
     unsigned int   n_step_cuts         = 4;
+    double         plastic_tol         = 1e-6;
+    unsigned int   max_plastic         = 200;
     double         energy_tolerance    = 1e-6;
     double         alpha_m             = 0.5;
     double         alpha_f             = 0.5;

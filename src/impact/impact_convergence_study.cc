@@ -146,7 +146,7 @@ namespace DiskImpact
 
     // Each run's results as numbers, summed over the ranks (zero where a
     // rank did not run it).
-    constexpr unsigned int n_fields = 12;
+    constexpr unsigned int n_fields = 14;
     std::vector<double>    fields(n_fields * runs.size(), 0.);
     auto                   run_one = [&](const unsigned int i) {
       const auto    start = std::chrono::steady_clock::now();
@@ -191,7 +191,9 @@ namespace DiskImpact
                                                  seconds,
                                                  s.schwager_alpha,
                                                  s.one_dof_epsilon,
-                                                 s.ramirez_u}};
+                                                 s.ramirez_u,
+                                                 s.plastic_work,
+                                                 s.plastic_strain_max}};
       std::copy(values.begin(), values.end(), &fields[n_fields * i]);
       if (log != nullptr)
         *log << describe({runs[i].factor,
@@ -228,6 +230,8 @@ namespace DiskImpact
         s.schwager_alpha  = f[9];
         s.one_dof_epsilon = f[10];
         s.ramirez_u       = f[11];
+        s.plastic_work       = f[12];
+        s.plastic_strain_max = f[13];
       }
     return done;
   }

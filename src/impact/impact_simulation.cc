@@ -1,5 +1,6 @@
 #include "impact/impact_simulation.h"
 
+#include "base/input_error.h"
 #include "base/peak_memory.h"
 #include "base/run_error.h"
 #include "elasticity/largest_von_mises.h"
@@ -17,6 +18,7 @@
 
 #include <deal.II/numerics/vector_tools.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <sstream>
@@ -53,7 +55,8 @@ namespace DiskImpact
                        "energy_total",
                        "tangential_force",
                        "v_tangential_com",
-                       "spin"});
+                       "spin",
+                       "energy_plastic"});
     }
 
     /// The locally owned entries of @p x of all ranks, in DoF order, on
@@ -247,6 +250,17 @@ namespace DiskImpact
                                                     communicator);
     if (pair)
       bodies = std::make_unique<BodyMotion<dim>>(op, wall.normal, 2);
+    const auto materials = ImpactOperatorsBase::materials(parameters);
+    if (std::any_of(materials.begin(), materials.end(), [](const auto &m) {
+          return m.is_plastic();
+        }))
+      {
+        require(law != nullptr,
+                "Contact: an elastic-plastic body ('Yield stress' > 0) needs "
+                "a penalty-type 'Law', not 'constraint'");
+        plasticity = std::make_unique<PlasticStrainField<dim>>(op, materials);
+        stepper->enable_plasticity(*plasticity);
+      }
   }
 
   template <int dim>
@@ -459,6 +473,7 @@ namespace DiskImpact
     angular_impulse += dt * domain_factor * state.torque_average;
     friction_work += domain_factor * state.friction_work;
     dissipated += domain_factor * step.viscous_work;
+    plastic_work += domain_factor * step.plastic_work;
     ++summary.steps;
   }
 
@@ -471,13 +486,11 @@ namespace DiskImpact
     constraint_map.zeroed(v, work);
     const double kinetic =
       0.5 * domain_factor * (work * stepper->mass_times_velocity());
-    constraint_map.zeroed(u, work);
-    const double strain =
-      0.5 * domain_factor * (work * stepper->stiffness_times_displacement());
+    const double strain = domain_factor * stepper->strain_energy();
     const double v_com = mean_along_normal(v);
     const double x_com = mean_along_normal(u) / radius;
-    const double total = kinetic + strain + domain_factor * step.energy +
-                         dissipated + friction_work;
+    const double total  = kinetic + strain + domain_factor * step.energy +
+                         dissipated + friction_work + plastic_work;
     // The step's mean force (its impulse / dt): the time discretization fixes
     // this mean, not the end-of-step force (docs/theory/impact-method.md).
     const double force = domain_factor * step.force_average / force_unit;
@@ -497,22 +510,23 @@ namespace DiskImpact
         approximately(time * velocity_unit / radius) +
         " R/c (the time stepping is unstable for this contact)");
     series.start_row();
-    for (const double value : {time * velocity_unit / radius,
-                               x_com,
-                               v_com / velocity_unit,
-                               force,
-                               step.half_width() / radius,
-                               kinetic,
-                               translational_energy(v_com),
-                               strain,
-                               domain_factor * step.energy,
-                               dissipated,
-                               friction_work,
-                               total,
-                               domain_factor *
-                                 step.tangential_force_average[0] / force_unit,
-                               mean_along_tangent(v) / velocity_unit,
-                               mean_rotation(v) * radius / velocity_unit})
+    for (const double value :
+         {time * velocity_unit / radius,
+          x_com,
+          v_com / velocity_unit,
+          force,
+          step.half_width() / radius,
+          kinetic,
+          translational_energy(v_com),
+          strain,
+          domain_factor * step.energy,
+          dissipated,
+          friction_work,
+          total,
+          domain_factor * step.tangential_force_average[0] / force_unit,
+          mean_along_tangent(v) / velocity_unit,
+          mean_rotation(v) * radius / velocity_unit,
+          plastic_work})
       series.add(value);
     summary.delta_max = std::max(summary.delta_max, -x_com);
     // The state of the largest force, where the contact's stress peaks
@@ -530,6 +544,12 @@ namespace DiskImpact
   void
   ImpactSimulation<dim>::record_stress_peak()
   {
+    // An elastic-plastic body's stress is not C : eps of the displacement.
+    if (plasticity)
+      {
+        summary.von_mises_max = summary.von_mises_depth = std::nan("");
+        return;
+      }
     if constexpr (dim == 2)
       {
         // A Hertz contact yields below its centre, at depth 0.5a ... 0.8a:
@@ -635,8 +655,19 @@ namespace DiskImpact
     const auto traction =
       (*traction_field)(zone->candidate_dofs(),
                         stepper->contact_force_on_candidates());
+    // An elastic-plastic body: its plastic strain and von Mises stress
+    // per cell instead of the elastic stress fields (and no revolved view,
+    // which revolves those).
+    std::vector<CellField> cells;
+    if (plasticity)
+      cells = {{"equivalent_plastic_strain",
+                plasticity->equivalent_plastic_strain_per_cell(),
+                false},
+               {"von_mises_stress",
+                plasticity->von_mises_stress_per_cell(),
+                true}};
     if constexpr (dim == 2)
-      if (parameters.impact.revolved_view() > 0.)
+      if (parameters.impact.revolved_view() > 0. && !plasticity)
         {
           const auto [flat, revolved] =
             write_deformed_and_revolved_state(op,
@@ -662,7 +693,8 @@ namespace DiskImpact
                                                 "impact",
                                                 snapshots.size(),
                                                 scales,
-                                                &traction));
+                                                &traction,
+                                                plasticity ? &cells : nullptr));
   }
 
   template <int dim>
@@ -689,11 +721,20 @@ namespace DiskImpact
           (body_mass * impact_speed);
         // The energy left in the body's vibration: all but the energy of
         // its rigid motion.
+        const double strain = plasticity ?
+                                stepper->strain_energy() :
+                                quadratic_form(op.stiffness_matrix(), u);
         summary.vibration_fraction =
-          (domain_factor * (quadratic_form(op.mass_matrix(), v) +
-                            quadratic_form(op.stiffness_matrix(), u)) -
+          (domain_factor * (quadratic_form(op.mass_matrix(), v) + strain) -
            rigid_motion_energy(v)) /
           energy_initial;
+      }
+    if (plasticity)
+      {
+        summary.plastic_work = plastic_work / energy_initial;
+        summary.plastic_strain_max =
+          plasticity->largest_equivalent_plastic_strain();
+        summary.plastic_iterations = stepper->n_plastic_iterations();
       }
     summary.newton_iterations     = stepper->n_newton_iterations();
     summary.factorizations        = stepper->n_factorizations();
@@ -833,8 +874,9 @@ namespace DiskImpact
              " (the scheme is unstable for this contact); use 'Scheme' = "
              "energy conserving or lower 'Time step fraction'");
     // The quasistatic 1-DOF model (log law) is no good reference for the
-    // exponential wall, nor beyond the log law's range (NaN).
-    if (!parameters.contact.approximates_hard_contact())
+    // exponential wall, nor beyond the log law's range (NaN), nor for a
+    // body that yields.
+    if (!parameters.contact.approximates_hard_contact() || plasticity)
       return;
     for (const auto &[name, fe, one_dof] :
          std::vector<std::tuple<std::string, double, double>>{

@@ -163,6 +163,8 @@ namespace DiskImpact
     std::unique_ptr<BodyMotion<dim>>     bodies;
     std::unique_ptr<ModalProjection>     projection;
     std::unique_ptr<ContactStepper<dim>> stepper;
+    /// The plastic strain of an elastic-plastic body (null if elastic).
+    std::unique_ptr<PlasticStrainField<dim>> plasticity;
     /// The outputs' contact traction (made at the first snapshot).
     std::unique_ptr<ContactTraction<dim>> traction_field;
 
@@ -194,6 +196,8 @@ namespace DiskImpact
     double energy_growth = 0.;
     /// Energy dissipated by the viscosity so far (whole disk).
     double       dissipated = 0.;
+    /// Plastic work so far (whole body).
+    double       plastic_work = 0.;
     ContactState state;
     /// The end of contact (-1: not yet) and the last two positive step-mean
     /// forces with their mid-step times.

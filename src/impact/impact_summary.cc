@@ -55,7 +55,10 @@ namespace DiskImpact
                     "tangential_impulse_error",
                     "angular_impulse_error",
                     "von_mises_max",
-                    "von_mises_depth"});
+                    "von_mises_depth",
+                    "plastic_work",
+                    "plastic_strain_max",
+                    "plastic_iterations"});
     table.start_row();
     for (const double value : {s.velocity,
                                s.epsilon,
@@ -101,8 +104,11 @@ namespace DiskImpact
                                o.tangential_impulse_error,
                                o.angular_impulse_error,
                                s.von_mises_max,
-                               s.von_mises_depth})
+                               s.von_mises_depth,
+                               s.plastic_work,
+                               s.plastic_strain_max})
       table.add(value);
+    table.add(s.plastic_iterations);
     return table;
   }
 } // namespace DiskImpact

@@ -68,6 +68,12 @@ namespace DiskImpact
     /// (over E2; 2D models) and its depth below the contact point [R]:
     /// the body first yields where it reaches Y.
     double       von_mises_max = 0., von_mises_depth = 0.;
+    /// An elastic-plastic body (NaN for an elastic one): the plastic work
+    /// / E(0), the largest equivalent plastic strain and the plastic
+    /// iterations of all steps.
+    double       plastic_work          = std::nan("");
+    double       plastic_strain_max    = std::nan("");
+    unsigned int plastic_iterations    = 0;
     double       energy_error      = 0.; ///< max |E(t) - E(0)| / E(0)
     double       impulse_error     = 0.; ///< |m dv - sum F dt| / (m v_i)
     unsigned int steps             = 0;

@@ -25,12 +25,14 @@ namespace DiskImpact
 
   J2ReturnMapping::Update
   J2ReturnMapping::update(const SymmetricTensor<2, 3> &strain,
-                          const State                 &old) const
+                          const State                 &old,
+                          const bool                   with_tangent) const
   {
     Update result;
-    result.state   = old;
-    result.stress  = elastic * (strain - old.plastic_strain);
-    result.tangent = elastic;
+    result.state  = old;
+    result.stress = elastic * (strain - old.plastic_strain);
+    if (with_tangent)
+      result.tangent = elastic;
     const SymmetricTensor<2, 3> trial_deviator = deviator(result.stress);
     const double                trial_norm     = trial_deviator.norm();
     const double                radius =
@@ -49,6 +51,8 @@ namespace DiskImpact
     result.state.equivalent_plastic_strain += std::sqrt(2. / 3.) * dgamma;
     // sigma_{n+1} : dgamma n = dgamma |dev sigma_{n+1}|.
     result.plastic_work = dgamma * (trial_norm - 2. * mu * dgamma);
+    if (!with_tangent)
+      return result;
 
     // C - (2 mu)^2 / (2 mu + 2H/3) n (x) n
     //   - (2 mu)^2 dgamma / |s_trial| (I_dev - n (x) n).
@@ -63,9 +67,21 @@ namespace DiskImpact
     return result;
   }
 
+  SymmetricTensor<2, 3>
+  J2ReturnMapping::elastic_stress(const SymmetricTensor<2, 3> &strain) const
+  {
+    return elastic * strain;
+  }
+
   double
   J2ReturnMapping::yield_stress() const
   {
     return yield;
+  }
+
+  double
+  J2ReturnMapping::hardening_modulus() const
+  {
+    return hardening;
   }
 } // namespace DiskImpact

@@ -44,12 +44,21 @@ namespace DiskImpact
                     double yield_stress,
                     double hardening_modulus);
 
-    /// The stress at the total strain @p strain from the state @p old.
+    /// The stress at the total strain @p strain from the state @p old;
+    /// the tangent only if @p with_tangent (else left zero).
     Update
-    update(const dealii::SymmetricTensor<2, 3> &strain, const State &old) const;
+    update(const dealii::SymmetricTensor<2, 3> &strain,
+           const State                         &old,
+           bool                                 with_tangent = true) const;
+
+    /// C : eps, the elastic stress of a strain.
+    dealii::SymmetricTensor<2, 3>
+    elastic_stress(const dealii::SymmetricTensor<2, 3> &strain) const;
 
     double
     yield_stress() const;
+    double
+    hardening_modulus() const;
 
   private:
     double                        mu, yield, hardening;

@@ -58,6 +58,20 @@ namespace DiskImpact
                         "In-plane bulk viscosity eta_b [stress * time]: adds "
                         "eta_b tr(eps_dot) 1 to the stress. Must not be "
                         "negative.");
+      prm.declare_entry("Yield stress",
+                        "0",
+                        Patterns::Double(),
+                        "Von Mises yield stress Y [force/area] (uniaxial): "
+                        "0 is elastic; above 0 the body is elastic-plastic "
+                        "(J2 flow, radial return). Plane strain, spheres and "
+                        "3D bodies; not plane stress. Must not be negative.");
+      prm.declare_entry("Hardening modulus",
+                        "0",
+                        Patterns::Double(),
+                        "Linear isotropic hardening modulus H [force/area]: "
+                        "the yield stress grows as Y + H alpha with the "
+                        "equivalent plastic strain alpha. 0 is perfectly "
+                        "plastic; must not be negative.");
     }
     prm.leave_subsection();
   }
@@ -77,6 +91,8 @@ namespace DiskImpact
         prm.get_double("Relaxation time"));
     set_viscosities(prm.get_double("Shear viscosity"),
                     prm.get_double("Bulk viscosity"));
+    set_plasticity(prm.get_double("Yield stress"),
+                   prm.get_double("Hardening modulus"));
     prm.leave_subsection();
   }
 
@@ -257,6 +273,49 @@ namespace DiskImpact
     bulk_eta  = bulk_viscosity;
   }
 
+  void
+  Material::set_plasticity(const double yield_stress,
+                           const double hardening_modulus)
+  {
+    require(yield_stress >= 0. && hardening_modulus >= 0.,
+            "Material: 'Yield stress' and 'Hardening modulus' must not be "
+            "negative, got " +
+              std::to_string(yield_stress) + " and " +
+              std::to_string(hardening_modulus));
+    yield     = yield_stress;
+    hardening = hardening_modulus;
+  }
+
+  bool
+  Material::is_plastic() const
+  {
+    return yield > 0.;
+  }
+
+  double
+  Material::yield_stress() const
+  {
+    return yield;
+  }
+
+  double
+  Material::hardening_modulus() const
+  {
+    return hardening;
+  }
+
+  double
+  Material::lame_lambda_3d() const
+  {
+    return young * poisson / ((1. + poisson) * (1. - 2. * poisson));
+  }
+
+  double
+  Material::shear_modulus_3d() const
+  {
+    return young / (2. * (1. + poisson));
+  }
+
   template <int dim>
   SymmetricTensor<4, dim>
   Material::damping_tensor() const
@@ -319,6 +378,9 @@ namespace DiskImpact
       << "  wave speeds: c_L = " << longitudinal_wave_speed()
       << ", c_T = " << transverse_wave_speed()
       << ", velocity unit c = sqrt(E2/rho) = " << velocity_unit() << '\n';
+    if (is_plastic())
+      s << "  plasticity: von Mises, yield stress Y = " << yield
+        << ", hardening modulus H = " << hardening << '\n';
     out << s.str();
   }
 } // namespace DiskImpact

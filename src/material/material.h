@@ -114,6 +114,24 @@ namespace DiskImpact
     bool
     is_viscous() const;
 
+    /// Von Mises plasticity with linear isotropic hardening: the yield
+    /// stress Y (0: elastic) and the hardening modulus H (0: perfectly
+    /// plastic), both checked >= 0.
+    void
+    set_plasticity(double yield_stress, double hardening_modulus);
+    bool
+    is_plastic() const;
+    double
+    yield_stress() const;
+    double
+    hardening_modulus() const;
+    /// Lame's constants of the three-dimensional material (those of the
+    /// plasticity of plane strain, the axisymmetric and the 3D body).
+    double
+    lame_lambda_3d() const;
+    double
+    shear_modulus_3d() const;
+
     /// Longitudinal and transverse wave speeds, and the velocity unit of Gerl &
     /// Zippelius c = sqrt(E2 / rho).
     double
@@ -138,5 +156,7 @@ namespace DiskImpact
     double     relaxation_tau = 0.;
     double     shear_eta      = 0.;
     double     bulk_eta       = 0.;
+    double     yield          = 0.;
+    double     hardening      = 0.;
   };
 } // namespace DiskImpact

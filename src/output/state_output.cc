@@ -30,7 +30,7 @@ namespace DiskImpact
       /// Displacements and coordinates times scales.length, stresses
       /// times scales.stress.
       void
-      scale(const FieldScales &scales)
+      scale(const FieldScales &scales, const std::vector<CellField> *cells)
       {
         if (scales.length == 1. && scales.stress == 1.)
           return;
@@ -38,8 +38,13 @@ namespace DiskImpact
                       get_dataset_names(),
                       scales.length,
                       [&](const std::string &name) {
-                        return name == "displacement" ? scales.length :
-                                                        scales.stress;
+                        if (name == "displacement")
+                          return scales.length;
+                        if (cells)
+                          for (const CellField &field : *cells)
+                            if (field.name == name && !field.is_stress)
+                              return 1.;
+                        return scales.stress;
                       });
       }
     };
@@ -71,8 +76,11 @@ namespace DiskImpact
                    const std::vector<Material>      &materials,
                    const PETScWrappers::MPI::Vector &ghosted_u,
                    const FieldScales                &scales,
-                   const PETScWrappers::MPI::Vector *ghosted_traction)
-          : stresses(stress_fields<dim>(materials))
+                   const PETScWrappers::MPI::Vector *ghosted_traction,
+                   const std::vector<CellField>     *cell_fields)
+          : stresses(cell_fields ?
+                       std::vector<std::unique_ptr<DataPostprocessor<dim>>>() :
+                       stress_fields<dim>(materials))
       {
         data_out.attach_dof_handler(op.get_dof_handler());
         const std::vector<
@@ -91,10 +99,15 @@ namespace DiskImpact
                                    vector_field);
         for (const auto &field : stresses)
           data_out.add_data_vector(ghosted_u, *field);
+        if (cell_fields)
+          for (const CellField &field : *cell_fields)
+            data_out.add_data_vector(field.values,
+                                     field.name,
+                                     DataOut<dim>::type_cell_data);
         data_out.build_patches(op.get_mapping(),
                                op.degree(),
                                DataOut<dim>::curved_inner_cells);
-        data_out.scale(scales);
+        data_out.scale(scales, cell_fields);
       }
 
       const std::vector<std::unique_ptr<DataPostprocessor<dim>>> stresses;
@@ -120,9 +133,11 @@ namespace DiskImpact
                        const std::string                &basename,
                        const unsigned int                index,
                        const FieldScales                &scales,
-                       const PETScWrappers::MPI::Vector *ghosted_traction)
+                       const PETScWrappers::MPI::Vector *ghosted_traction,
+                       const std::vector<CellField>     *cell_fields)
   {
-    StatePatches<dim> state(op, material, ghosted_u, scales, ghosted_traction);
+    StatePatches<dim> state(
+      op, material, ghosted_u, scales, ghosted_traction, cell_fields);
     state.data_out.set_flags(vtu_flags());
     return write_vtu_record(state.data_out,
                             directory,
@@ -139,7 +154,8 @@ namespace DiskImpact
                        const std::string &,
                        unsigned int,
                        const FieldScales &,
-                       const PETScWrappers::MPI::Vector *);
+                       const PETScWrappers::MPI::Vector *,
+                       const std::vector<CellField> *);
   template std::string
   write_deformed_state(const ElasticityOperator<3> &,
                        const std::vector<Material> &,
@@ -148,7 +164,8 @@ namespace DiskImpact
                        const std::string &,
                        unsigned int,
                        const FieldScales &,
-                       const PETScWrappers::MPI::Vector *);
+                       const PETScWrappers::MPI::Vector *,
+                       const std::vector<CellField> *);
 
   std::pair<std::string, std::string>
   write_deformed_and_revolved_state(
@@ -165,7 +182,8 @@ namespace DiskImpact
     const PETScWrappers::MPI::Vector *ghosted_traction)
   {
     // One set of patches (the stresses evaluated once) for both files.
-    StatePatches<2> state(op, material, ghosted_u, scales, ghosted_traction);
+    StatePatches<2> state(
+      op, material, ghosted_u, scales, ghosted_traction, nullptr);
     state.data_out.set_flags(vtu_flags());
     const MPI_Comm    communicator = op.get_dof_handler().get_communicator();
     const std::string flat         = write_vtu_record(

@@ -18,6 +18,16 @@ namespace DiskImpact
 
   // The materials: materials[i] on the cells of material id i.
 
+  /// Values per active cell written beside the fields (DataOut's cell
+  /// data): an elastic-plastic body's plastic strain and stress. A stress
+  /// is scaled as the stresses, other values are not.
+  struct CellField
+  {
+    std::string           name;
+    dealii::Vector<float> values;
+    bool                  is_stress = false;
+  };
+
   /**
    * Write a displacement field, its stress tensor and the scalar stress
    * measures with deal.II's DataOut on curved patches of the element
@@ -28,7 +38,9 @@ namespace DiskImpact
    * stress (von Mises, principal stresses, pressure; see
    * StressScalarsPostprocessor), a 3D body the solid's
    * (SolidStressPostprocessor). With @p ghosted_traction (ContactTraction)
-   * also the vector field contact_traction, scaled as the stresses.
+   * also the vector field contact_traction, scaled as the stresses. With
+   * @p cell_fields (an elastic-plastic body, whose stress is not C : eps of
+   * the displacement) those cell values instead of the stress fields.
    */
   template <int dim>
   std::string
@@ -40,7 +52,8 @@ namespace DiskImpact
     const std::string                        &basename,
     unsigned int                              index,
     const FieldScales                        &scales           = {},
-    const dealii::PETScWrappers::MPI::Vector *ghosted_traction = nullptr);
+    const dealii::PETScWrappers::MPI::Vector *ghosted_traction = nullptr,
+    const std::vector<CellField>             *cell_fields      = nullptr);
 
   /**
    * write_deformed_state() for a sphere (Material axisymmetric), and from

@@ -213,9 +213,36 @@ namespace DiskImpact
     require(partner.is_body() || impact.partner_radii().empty(),
             "Impact: 'Partner radii' needs 'Kind = body' in subsection "
             "Partner");
+    check_plasticity();
     if (task().check)
       task().check(*this);
     warn_of_locking();
+  }
+
+  void
+  Parameters::check_plasticity() const
+  {
+    std::vector<Material> bodies{material};
+    if (partner.is_body())
+      bodies.push_back(partner.material());
+    for (const Material &body : bodies)
+      {
+        if (!body.is_plastic())
+          continue;
+        require(task().traits.plasticity,
+                "Material: 'Yield stress' > 0 (an elastic-plastic body) is "
+                "computed by the tasks impact, sweep and impact convergence so "
+                "far, not by '" +
+                  run.task + "'");
+        require(geometry.is_sphere() || geometry.dimension() == 3 ||
+                  body.plane_model() == PlaneModel::plane_strain,
+                "Material: 'Yield stress' > 0 needs 'Plane model = plane "
+                "strain' for a disk in two dimensions (the von Mises return "
+                "mapping of plane stress is not implemented)");
+        require(!contact.exact_constraint(),
+                "Contact: an elastic-plastic body ('Yield stress' > 0) needs "
+                "'Law = penalty' or 'exponential', not 'constraint'");
+      }
   }
 
   const TaskEntry &

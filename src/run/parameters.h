@@ -79,6 +79,10 @@ namespace DiskImpact
     /// The limits of a deformable collision partner (subsection Partner).
     void
     check_partner() const;
+    /// An elastic-plastic body: a task, model and contact law that
+    /// compute it.
+    void
+    check_plasticity() const;
     /// A warning if linear elements meet a nearly incompressible body.
     void
     warn_of_locking();

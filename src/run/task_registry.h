@@ -35,6 +35,8 @@ namespace DiskImpact
     bool sphere = true;
     /// Computes three-dimensional bodies ('Dimension = 3').
     bool three_dimensional = false;
+    /// Computes elastic-plastic bodies ('Yield stress' > 0).
+    bool plasticity = false;
   };
 
   /**

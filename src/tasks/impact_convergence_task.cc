@@ -93,6 +93,7 @@ namespace DiskImpact
       task.traits.partner_body      = true;
       task.traits.one_mesh_per_rank = true;
       task.traits.three_dimensional = true;
+      task.traits.plasticity        = true;
       task.result_files = {"impact_convergence.csv", "epsilon_estimate.csv"};
       task.run = [](const Parameters &parameters, bool, MPI_Comm communicator) {
         run_impact_convergence(parameters, communicator);

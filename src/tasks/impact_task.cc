@@ -79,7 +79,8 @@ namespace DiskImpact
           << s.one_dof_delta_max << ")\n"
           << "  force_max = " << s.force_max << (sphere ? " E* R^2" : " E2 R")
           << "\n";
-      if (parameters.geometry.dimension() == 2)
+      if (parameters.geometry.dimension() == 2 &&
+          std::isfinite(s.von_mises_max))
         out << "  largest von Mises stress = " << s.von_mises_max
             << (sphere ? " E*" : " E2") << " at depth " << s.von_mises_depth
             << " R below the contact point (first yield where it reaches "
@@ -96,6 +97,11 @@ namespace DiskImpact
           << s.triangular_solve_time * 1e3 << " ms); " << s.contact_dofs
           << " contact DoFs condensed\n"
           << "  peak memory " << s.peak_memory_mb << " MB (all ranks)\n";
+      if (std::isfinite(s.plastic_work))
+        out << "  plastic work = " << s.plastic_work
+            << " of E(0), largest equivalent plastic strain = "
+            << s.plastic_strain_max << ", plastic iterations "
+            << s.plastic_iterations << "\n";
       out << "  energy left in vibration: " << s.vibration_fraction
           << " of E(0)";
       if (parameters.partner.is_body())
@@ -116,7 +122,8 @@ namespace DiskImpact
           << " s, delta_max = " << s.delta_max * units.length()
           << " m, force_max = " << s.force_max * units.force() << ' '
           << units.force_name()
-          << (parameters.geometry.dimension() == 2 ?
+          << (parameters.geometry.dimension() == 2 &&
+                  std::isfinite(s.von_mises_max) ?
                 ", largest von Mises stress = " +
                   approximately(s.von_mises_max * units.young_modulus() *
                                   parameters.material.in_plane_young_modulus() /
@@ -141,6 +148,7 @@ namespace DiskImpact
       task.traits.impacts           = true;
       task.traits.partner_body      = true;
       task.traits.three_dimensional = true;
+      task.traits.plasticity        = true;
       task.result_files             = {"summary.csv",
                                        "impact.csv",
                                        "mode_energies.csv",

@@ -59,7 +59,9 @@ namespace DiskImpact
                                                 "rebound_angle",
                                                 "psi_incident",
                                                 "psi_rebound",
-                                                "friction_work"};
+                                                "friction_work",
+                                                "plastic_work",
+                                                "plastic_strain_max"};
     /// Positions of the columns that identify a point.
     constexpr unsigned int velocity_column = 0, poisson_column = 1,
                            relaxation_column = 13, partner_column = 16,
@@ -191,7 +193,9 @@ namespace DiskImpact
              {23, s.oblique.rebound_angle},
              {24, s.oblique.psi_incident},
              {25, s.oblique.psi_rebound},
-             {26, s.oblique.friction_work}})
+             {26, s.oblique.friction_work},
+             {27, s.plastic_work},
+             {28, s.plastic_strain_max}})
         row[column] = value;
       return row;
     }
@@ -729,6 +733,7 @@ namespace DiskImpact
       task.traits.partner_body      = true;
       task.traits.one_mesh_per_rank = true;
       task.traits.three_dimensional = true;
+      task.traits.plasticity        = true;
       task.result_files             = sweep_result_files();
       task.run                      = run_sweep;
       task.check                    = check_sweep;

@@ -5,6 +5,7 @@ usage: check_impact.py summary.csv [--epsilon E TOL] [--energy TOL]
        [--impulse TOL] [--one-dof TOL] [--factorizations N]
        [--solves-per-step MAX] [--one-dof-epsilon TOL]
        [--one-dof-unloading TOL [--ramirez-law-off MIN]]
+       [--plastic-balance TOL]
 """
 import argparse
 import csv
@@ -29,12 +30,22 @@ p.add_argument("--factorizations", type=int)
 p.add_argument("--solves-per-step", type=float,
                help="bound on triangular_solves / steps (solves with the "
                     "factorized matrix per time step)")
+p.add_argument("--plastic-balance", type=float,
+               help="bound on |epsilon^2 + plastic_work + vibration_fraction "
+                    "- 1|: an elastic-plastic impact's energy after it, from "
+                    "the rebound velocity, the quadrature points' plastic "
+                    "work and the body's vibration, and plastic_work > 0")
 a = p.parse_args()
 s = next(csv.DictReader(open(a.summary, newline="")))
 checks = []
 if a.epsilon:
     checks.append(("epsilon", float(s["epsilon"]),
                    abs(float(s["epsilon"]) - a.epsilon[0]) <= a.epsilon[1]))
+if a.plastic_balance is not None:
+    eps, plastic = float(s["epsilon"]), float(s["plastic_work"])
+    balance = eps ** 2 + plastic + float(s["vibration_fraction"]) - 1
+    checks.append(("plastic balance", balance,
+                   abs(balance) <= a.plastic_balance and plastic > 0))
 if a.energy is not None:
     checks.append(("energy_error", float(s["energy_error"]),
                    float(s["energy_error"]) <= a.energy))

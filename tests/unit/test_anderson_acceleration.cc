@@ -15,7 +15,7 @@ TEST_CASE("Anderson acceleration: a slowly contracting linear map",
   Vector<double>            x(4), fixed(4);
   for (unsigned int i = 0; i < 4; ++i)
     fixed[i] = c[i] / (1. - g[i]);
-  AndersonAcceleration acceleration(5);
+  AndersonAcceleration<> acceleration(5);
   unsigned int         steps = 0;
   for (; steps < 50; ++steps)
     {
