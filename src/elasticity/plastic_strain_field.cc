@@ -16,26 +16,6 @@ namespace DiskImpact
 
   namespace
   {
-    /// The three-dimensional strain of a section's in-plane strain @p eps
-    /// and out-of-plane strain @p eps_zz (the hoop strain of an
-    /// axisymmetric body, 0 in plane strain).
-    SymmetricTensor<2, 3>
-    embedded_strain(const SymmetricTensor<2, 2> &eps, const double eps_zz)
-    {
-      SymmetricTensor<2, 3> strain;
-      for (unsigned int i = 0; i < 2; ++i)
-        for (unsigned int j = i; j < 2; ++j)
-          strain[i][j] = eps[i][j];
-      strain[2][2] = eps_zz;
-      return strain;
-    }
-
-    SymmetricTensor<2, 3>
-    embedded_strain(const SymmetricTensor<2, 3> &eps, double)
-    {
-      return eps;
-    }
-
     /// sigma : eps(v) for a test function with in-plane strain @p eps and
     /// out-of-plane strain @p eps_zz.
     double
@@ -139,7 +119,8 @@ namespace DiskImpact
               Point      &point  = cell_points[q];
               const auto &x      = fe_values.quadrature_point(q);
               const auto  update = return_mapping.update(
-                embedded_strain(strains[q], section.hoop_strain(values[q], x)),
+                three_dimensional(strains[q],
+                                  section.hoop_strain(values[q], x)),
                 point.accepted,
                 false);
               point.trial        = update.state;

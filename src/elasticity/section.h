@@ -2,6 +2,7 @@
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/point.h>
+#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
 #include <cmath>
@@ -57,4 +58,26 @@ namespace DiskImpact
   private:
     bool axisymmetric;
   };
+
+  /// The three-dimensional tensor of a section's in-plane part @p in_plane
+  /// and out-of-plane part @p out_of_plane (zz: the hoop component of an
+  /// axisymmetric body; the plane models' sigma_zz or eps_zz).
+  inline dealii::SymmetricTensor<2, 3>
+  three_dimensional(const dealii::SymmetricTensor<2, 2> &in_plane,
+                    const double                         out_of_plane)
+  {
+    dealii::SymmetricTensor<2, 3> full;
+    for (unsigned int i = 0; i < 2; ++i)
+      for (unsigned int j = i; j < 2; ++j)
+        full[i][j] = in_plane[i][j];
+    full[2][2] = out_of_plane;
+    return full;
+  }
+
+  /// A solid's tensor is already three-dimensional.
+  inline dealii::SymmetricTensor<2, 3>
+  three_dimensional(const dealii::SymmetricTensor<2, 3> &tensor, double)
+  {
+    return tensor;
+  }
 } // namespace DiskImpact

@@ -1,5 +1,7 @@
 #include "elasticity/stress_postprocessor.h"
 
+#include "elasticity/section.h"
+
 #include <cmath>
 
 namespace DiskImpact
@@ -73,12 +75,7 @@ namespace DiskImpact
   SymmetricTensor<2, 3>
   SectionStress::three_dimensional() const
   {
-    SymmetricTensor<2, 3> full;
-    for (unsigned int i = 0; i < 2; ++i)
-      for (unsigned int j = i; j < 2; ++j)
-        full[i][j] = in_plane[i][j];
-    full[2][2] = out_of_plane;
-    return full;
+    return DiskImpact::three_dimensional(in_plane, out_of_plane);
   }
 
   std::vector<SectionStressModel>

@@ -1,6 +1,5 @@
 #include "impact/impact_simulation.h"
 
-#include "base/input_error.h"
 #include "base/peak_memory.h"
 #include "base/run_error.h"
 #include "elasticity/largest_von_mises.h"
@@ -255,9 +254,8 @@ namespace DiskImpact
           return m.is_plastic();
         }))
       {
-        require(law != nullptr,
-                "Contact: an elastic-plastic body ('Yield stress' > 0) needs "
-                "a penalty-type 'Law', not 'constraint'");
+        // Parameters::check_plasticity() refused the exact constraint.
+        Assert(law != nullptr, ExcInternalError());
         plasticity = std::make_unique<PlasticStrainField<dim>>(op, materials);
         stepper->enable_plasticity(*plasticity);
       }

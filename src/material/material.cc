@@ -245,11 +245,8 @@ namespace DiskImpact
   {
     // In three dimensions the Lame constants of E and nu (a plane-strain
     // disk's in-plane constants are the same).
-    const double mu =
-      dim == 2 ? shear_modulus() : young / (2. * (1. + poisson));
-    const double lambda =
-      dim == 2 ? lame_lambda() :
-                 young * poisson / ((1. + poisson) * (1. - 2. * poisson));
+    const double mu     = dim == 2 ? shear_modulus() : shear_modulus_3d();
+    const double lambda = dim == 2 ? lame_lambda() : lame_lambda_3d();
     SymmetricTensor<4, dim> c;
     for (unsigned int i = 0; i < dim; ++i)
       for (unsigned int j = 0; j < dim; ++j)
