@@ -601,6 +601,13 @@ namespace DiskImpact
   }
 
   template <int dim>
+  const PETScWrappers::MPI::Vector &
+  ContactStepper<dim>::current_plastic_force() const
+  {
+    return plastic_force;
+  }
+
+  template <int dim>
   unsigned int
   ContactStepper<dim>::n_plastic_iterations() const
   {

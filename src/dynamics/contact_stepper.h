@@ -140,6 +140,10 @@ namespace DiskImpact
     /// body (its elastic strain's energy).
     double
     strain_energy() const;
+    /// An elastic-plastic body's f_p at the current state (the internal
+    /// force is K u - f_p).
+    const dealii::PETScWrappers::MPI::Vector &
+    current_plastic_force() const;
     /// Plastic iterations of all steps so far (enable_plasticity()).
     unsigned int
     n_plastic_iterations() const;

@@ -93,6 +93,18 @@ namespace DiskImpact
     return 0.5 * (work * product);
   }
 
+  template <int dim>
+  double
+  BodyMotion<dim>::dot(const unsigned int                body,
+                       const PETScWrappers::MPI::Vector &x,
+                       const PETScWrappers::MPI::Vector &y) const
+  {
+    work = x;
+    work.scale(indicators[body]);
+    op.get_constraints().set_zero(work);
+    return work * y;
+  }
+
   template class BodyMotion<2>;
   template class BodyMotion<3>;
 } // namespace DiskImpact

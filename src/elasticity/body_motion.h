@@ -15,7 +15,8 @@ namespace DiskImpact
   /**
    * The rigid motion of each body of a mesh that holds several (cells of
    * body i have material id i): its centre of mass along the impact
-   * normal n, its mass, and its share of the kinetic and strain energy.
+   * normal n, its mass, and its share of the kinetic and strain energy
+   * (and of an elastic-plastic body's u . f_p).
    *
    * Body i's centre-of-mass component of a field x along n is
    * (M n_i) . x / (n_i . M n_i), n_i the uniform field n on body i's DoFs
@@ -49,6 +50,13 @@ namespace DiskImpact
     quadratic_form(unsigned int                                    body,
                    const dealii::PETScWrappers::MPI::SparseMatrix &matrix,
                    const dealii::PETScWrappers::MPI::Vector       &x) const;
+
+    /// x_i . y with x_i = x on the body's DoFs, 0 elsewhere; constrained
+    /// entries ignored. Collective.
+    double
+    dot(unsigned int                              body,
+        const dealii::PETScWrappers::MPI::Vector &x,
+        const dealii::PETScWrappers::MPI::Vector &y) const;
 
   private:
     const ElasticityOperator<dim>                  &op;

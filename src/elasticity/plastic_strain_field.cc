@@ -7,8 +7,11 @@
 
 #include <deal.II/fe/fe_values.h>
 
+#include <deal.II/lac/full_matrix.h>
+
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 namespace DiskImpact
 {
@@ -33,6 +36,32 @@ namespace DiskImpact
                 double)
     {
       return sigma * eps;
+    }
+
+    /// cell_tangent(i, j) += eps_i : (C_ep - C) : eps_j dV at point @p q,
+    /// eps_i the three-dimensional strain of test function i.
+    template <int dim>
+    void
+    add_tangent_correction(const SymmetricTensor<4, 3>        &correction,
+                           const FEValues<dim>                &fe_values,
+                           const Section<dim>                 &section,
+                           const unsigned int                  q,
+                           const double                        volume,
+                           std::vector<SymmetricTensor<2, 3>> &test_strains,
+                           FullMatrix<double>                 &cell_tangent)
+    {
+      const FEValuesExtractors::Vector displacement(0);
+      const auto                      &x = fe_values.quadrature_point(q);
+      for (unsigned int i = 0; i < test_strains.size(); ++i)
+        test_strains[i] = three_dimensional(
+          fe_values[displacement].symmetric_gradient(i, q),
+          section.hoop_strain(fe_values[displacement].value(i, q), x));
+      for (unsigned int i = 0; i < test_strains.size(); ++i)
+        {
+          const SymmetricTensor<2, 3> row = test_strains[i] * correction;
+          for (unsigned int j = 0; j < test_strains.size(); ++j)
+            cell_tangent(i, j) += (row * test_strains[j]) * volume;
+        }
     }
   } // namespace
 
@@ -59,6 +88,7 @@ namespace DiskImpact
                                             material.yield_stress(),
                                             material.hardening_modulus()));
       }
+    strain_energy_terms.assign(return_mappings.size(), 0.);
     const unsigned int n_points =
       Utilities::pow(op.get_dof_handler().get_fe().degree + 1, dim);
     const auto &triangulation = op.get_dof_handler().get_triangulation();
@@ -73,7 +103,8 @@ namespace DiskImpact
   void
   PlasticStrainField<dim>::evaluate(const PETScWrappers::MPI::Vector &u,
                                     PETScWrappers::MPI::Vector       &force,
-                                    const bool                        all_cells)
+                                    const bool                        all_cells,
+                                    PETScWrappers::MPI::SparseMatrix *tangent)
   {
     const auto                          &dof_handler = op.get_dof_handler();
     const auto                          &fe          = dof_handler.get_fe();
@@ -91,6 +122,8 @@ namespace DiskImpact
     std::vector<SymmetricTensor<2, dim>> strains(n_q);
     std::vector<Tensor<1, dim>>          values(n_q);
     Vector<double>                       cell_force(dofs_per_cell);
+    FullMatrix<double> cell_tangent(dofs_per_cell, dofs_per_cell);
+    std::vector<SymmetricTensor<2, 3>>   test_strains(dofs_per_cell);
     std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
     const bool                           single = return_mappings.size() == 1;
 
@@ -111,7 +144,8 @@ namespace DiskImpact
           fe_values[displacement].get_function_values(ghosted, values);
           auto &cell_points = points[index];
           cell_force        = 0.;
-          bool plastic      = false;
+          cell_tangent      = 0.;
+          bool plastic = false, yielded = false;
           if (all_cells)
             near_yield[index] = false;
           for (unsigned int q = 0; q < n_q; ++q)
@@ -122,11 +156,23 @@ namespace DiskImpact
                 three_dimensional(strains[q],
                                   section.hoop_strain(values[q], x)),
                 point.accepted,
-                false);
+                tangent != nullptr);
               point.trial        = update.state;
               point.trial_stress = update.stress;
               point.volume       = fe_values.JxW(q) * section.measure(x);
               yielding += update.yielded;
+              if (tangent != nullptr && update.yielded)
+                {
+                  yielded = true;
+                  add_tangent_correction(update.tangent -
+                                           return_mapping.elastic_tangent(),
+                                         fe_values,
+                                         section,
+                                         q,
+                                         point.volume,
+                                         test_strains,
+                                         cell_tangent);
+                }
               if (all_cells &&
                   std::sqrt(1.5) * deviator(update.stress).norm() >=
                     0.8 * (return_mapping.yield_stress() +
@@ -152,11 +198,17 @@ namespace DiskImpact
           if (!plastic)
             continue;
           cell->get_dof_indices(dof_indices);
-          op.get_constraints().distribute_local_to_global(cell_force,
-                                                          dof_indices,
-                                                          force);
+          if (yielded)
+            op.get_constraints().distribute_local_to_global(
+              cell_tangent, cell_force, dof_indices, *tangent, force);
+          else
+            op.get_constraints().distribute_local_to_global(cell_force,
+                                                            dof_indices,
+                                                            force);
         }
     force.compress(VectorOperation::add);
+    if (tangent != nullptr)
+      tangent->compress(VectorOperation::add);
     yielding = Utilities::MPI::sum(yielding, dof_handler.get_communicator());
   }
 
@@ -164,7 +216,8 @@ namespace DiskImpact
   double
   PlasticStrainField<dim>::accept()
   {
-    double work = 0., energy = 0.;
+    double              work = 0.;
+    std::vector<double> energy(return_mappings.size(), 0.);
     for (const auto &cell : op.get_dof_handler().active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -182,15 +235,18 @@ namespace DiskImpact
               point.accepted = point.trial;
               point.stress   = point.trial_stress;
               if (point.accepted.equivalent_plastic_strain > 0.)
-                energy += 0.5 *
-                          (point.accepted.plastic_strain *
-                           return_mappings[which]->elastic_stress(
-                             point.accepted.plastic_strain)) *
-                          point.volume;
+                energy[which] += 0.5 *
+                                 (point.accepted.plastic_strain *
+                                  return_mappings[which]->elastic_stress(
+                                    point.accepted.plastic_strain)) *
+                                 point.volume;
             }
         }
     const MPI_Comm communicator = op.get_dof_handler().get_communicator();
-    strain_energy_term          = Utilities::MPI::sum(energy, communicator);
+    strain_energy_terms.resize(energy.size());
+    Utilities::MPI::sum(ArrayView<const double>(energy),
+                        communicator,
+                        ArrayView<double>(strain_energy_terms));
     return Utilities::MPI::sum(work, communicator);
   }
 
@@ -198,7 +254,19 @@ namespace DiskImpact
   double
   PlasticStrainField<dim>::plastic_strain_energy() const
   {
-    return strain_energy_term;
+    return std::accumulate(strain_energy_terms.begin(),
+                           strain_energy_terms.end(),
+                           0.);
+  }
+
+  template <int dim>
+  double
+  PlasticStrainField<dim>::plastic_strain_energy(const unsigned int body) const
+  {
+    if (strain_energy_terms.size() == 1)
+      return body == 0 ? strain_energy_terms[0] : 0.;
+    AssertIndexRange(body, strain_energy_terms.size());
+    return strain_energy_terms[body];
   }
 
   template <int dim>

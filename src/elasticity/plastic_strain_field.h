@@ -4,6 +4,7 @@
 #include "material/j2_return_mapping.h"
 #include "material/material.h"
 
+#include <deal.II/lac/petsc_sparse_matrix.h>
 #include <deal.II/lac/petsc_vector.h>
 #include <deal.II/lac/vector.h>
 
@@ -45,11 +46,15 @@ namespace DiskImpact
     /// @p all_cells false only on the cells the last evaluation of all
     /// cells found near yield (a von Mises stress above 0.8 of the yield
     /// stress, or plastic strain): the others keep their trial states. A
-    /// step's last evaluation must be of all cells. Collective.
+    /// step's last evaluation must be of all cells. With @p tangent also
+    /// add int eps(v) : (C_ep - C) : eps(w) dV of the yielding points to it
+    /// (C_ep the return mapping's consistent tangent), so that K plus it
+    /// is the derivative of K u - f_p (Newton's tangent). Collective.
     void
     evaluate(const dealii::PETScWrappers::MPI::Vector &u,
              dealii::PETScWrappers::MPI::Vector       &force,
-             bool                                      all_cells = true);
+             bool                                      all_cells = true,
+             dealii::PETScWrappers::MPI::SparseMatrix *tangent   = nullptr);
     /// Accept the last trial states; the plastic work since the last
     /// accepted states (over the section's volume). Collective.
     double
@@ -59,6 +64,9 @@ namespace DiskImpact
     /// energy is u.(K u)/2 - u.f_p + this.
     double
     plastic_strain_energy() const;
+    /// The same over the cells of material id @p body.
+    double
+    plastic_strain_energy(unsigned int body) const;
     /// The largest equivalent plastic strain alpha of the accepted states.
     /// Collective.
     double
@@ -96,7 +104,8 @@ namespace DiskImpact
     /// elsewhere), and whether the cell is near yield.
     std::vector<std::vector<Point>> points;
     std::vector<bool>               near_yield;
-    unsigned int                    yielding           = 0;
-    double                          strain_energy_term = 0.;
+    unsigned int                    yielding = 0;
+    /// int eps_p : C : eps_p dV / 2 of the accepted states per material.
+    std::vector<double> strain_energy_terms;
   };
 } // namespace DiskImpact

@@ -658,12 +658,7 @@ namespace DiskImpact
     // which revolves those).
     std::vector<CellField> cells;
     if (plasticity)
-      cells = {{"equivalent_plastic_strain",
-                plasticity->equivalent_plastic_strain_per_cell(),
-                false},
-               {"von_mises_stress",
-                plasticity->von_mises_stress_per_cell(),
-                true}};
+      cells = plastic_cell_fields(*plasticity);
     if constexpr (dim == 2)
       if (parameters.impact.revolved_view() > 0. && !plasticity)
         {
@@ -791,7 +786,8 @@ namespace DiskImpact
     // Each body's momentum change against the contact impulse (equal and
     // opposite on the two), relative to the reduced mass's m v_i; and the
     // energy left in each body's vibration: its energy less its centre of
-    // mass's kinetic energy.
+    // mass's kinetic energy (of an elastic-plastic body with its residual
+    // stresses, as strain_energy()).
     const auto  &u       = stepper->displacement();
     const auto  &v       = stepper->velocity();
     const double m1      = domain_factor * bodies->mass(0);
@@ -807,10 +803,13 @@ namespace DiskImpact
         error                = std::max(error,
                          std::abs(m * (v_end - v_start) -
                                   (body == 0 ? impulse : -impulse)));
+        double strain = bodies->quadratic_form(body, op.stiffness_matrix(), u);
+        if (plasticity)
+          strain += plasticity->plastic_strain_energy(body) -
+                    bodies->dot(body, u, stepper->current_plastic_force());
         const double vibration =
           domain_factor *
-            (bodies->quadratic_form(body, op.mass_matrix(), v) +
-             bodies->quadratic_form(body, op.stiffness_matrix(), u)) -
+            (bodies->quadratic_form(body, op.mass_matrix(), v) + strain) -
           0.5 * m * v_end * v_end;
         (body == 0 ? summary.vibration_fraction :
                      summary.partner_vibration_fraction) =

@@ -73,6 +73,12 @@ namespace DiskImpact
     return elastic * strain;
   }
 
+  const SymmetricTensor<4, 3> &
+  J2ReturnMapping::elastic_tangent() const
+  {
+    return elastic;
+  }
+
   double
   J2ReturnMapping::yield_stress() const
   {

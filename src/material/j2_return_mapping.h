@@ -55,6 +55,10 @@ namespace DiskImpact
     dealii::SymmetricTensor<2, 3>
     elastic_stress(const dealii::SymmetricTensor<2, 3> &strain) const;
 
+    /// C, the tangent where the point responds elastically.
+    const dealii::SymmetricTensor<4, 3> &
+    elastic_tangent() const;
+
     double
     yield_stress() const;
     double

@@ -1,6 +1,7 @@
 #include "output/state_output.h"
 
 #include "elasticity/elasticity_operator.h"
+#include "elasticity/plastic_strain_field.h"
 #include "elasticity/solid_stress_postprocessor.h"
 #include "elasticity/stress_postprocessor.h"
 #include "material/material.h"
@@ -123,6 +124,21 @@ namespace DiskImpact
       return flags;
     }
   } // namespace
+
+  template <int dim>
+  std::vector<CellField>
+  plastic_cell_fields(const PlasticStrainField<dim> &plasticity)
+  {
+    return {{"equivalent_plastic_strain",
+             plasticity.equivalent_plastic_strain_per_cell(),
+             false},
+            {"von_mises_stress", plasticity.von_mises_stress_per_cell(), true}};
+  }
+
+  template std::vector<CellField>
+  plastic_cell_fields(const PlasticStrainField<2> &);
+  template std::vector<CellField>
+  plastic_cell_fields(const PlasticStrainField<3> &);
 
   template <int dim>
   std::string

@@ -14,6 +14,8 @@ namespace DiskImpact
 {
   template <int dim>
   class ElasticityOperator;
+  template <int dim>
+  class PlasticStrainField;
   class Material;
 
   // The materials: materials[i] on the cells of material id i.
@@ -27,6 +29,12 @@ namespace DiskImpact
     dealii::Vector<float> values;
     bool                  is_stress = false;
   };
+
+  /// An elastic-plastic body's cell fields: its equivalent plastic strain
+  /// and von Mises stress per cell (PlasticStrainField).
+  template <int dim>
+  std::vector<CellField>
+  plastic_cell_fields(const PlasticStrainField<dim> &plasticity);
 
   /**
    * Write a displacement field, its stress tensor and the scalar stress

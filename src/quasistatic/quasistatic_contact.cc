@@ -3,18 +3,14 @@
 #include "base/input_error.h"
 #include "base/parameter_lists.h"
 #include "base/run_error.h"
-#include "contact/contact_operator.h"
 #include "contact/penalty_law.h"
-#include "dynamics/factorization.h"
-#include "elasticity/elasticity_operator.h"
-#include "elasticity/largest_von_mises.h"
 #include "impact/impact_estimates.h"
 #include "impact/impact_mesh.h"
 #include "output/atomic_file.h"
 #include "output/csv_table.h"
-#include "output/state_output.h"
+#include "quasistatic/quasistatic_indentation.h"
 #include "quasistatic/quasistatic_pair.h"
-#include "reference/hertz_first_yield.h"
+#include "quasistatic/wall_contact_problem.h"
 #include "reference/sphere_finite_size.h"
 #include "reference/two_body_contact.h"
 #include "reference/wall_contact_theory.h"
@@ -22,20 +18,12 @@
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/data_out_base.h>
-#include <deal.II/base/function.h>
-#include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
-
-#include <deal.II/distributed/tria.h>
-
-#include <deal.II/numerics/vector_tools.h>
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
-#include <memory>
 #include <sstream>
 
 namespace DiskImpact
@@ -52,282 +40,6 @@ namespace DiskImpact
         .penalty_factor();
     }
 
-    /// Where Hertz's half-space first yields: the sphere on its axis, the
-    /// disk with its out-of-plane stress (nu tr sigma in plane strain, 0
-    /// in plane stress).
-    Reference::FirstYield
-    hertz_first_yield(const Parameters &parameters)
-    {
-      const Material &material = parameters.material;
-      if (parameters.geometry.is_axisymmetric())
-        return Reference::sphere_first_yield(material.poisson_ratio());
-      return Reference::half_plane_first_yield(material.plane_model() ==
-                                                   PlaneModel::plane_strain ?
-                                                 material.poisson_ratio() :
-                                                 0.);
-    }
-  } // namespace
-
-  namespace
-  {
-    /// The problem at one load: mesh, operators, Newton, results.
-    class ContactProblem
-    {
-    public:
-      ContactProblem(const Parameters &parameters,
-                     double            load,
-                     MPI_Comm          communicator);
-
-      /// Newton from a rigid translation toward the wall by
-      /// @p initial_compression (times R); returns the iterations used.
-      unsigned int
-      solve(double       initial_compression,
-            double       tolerance,
-            unsigned int max_iterations);
-
-      ContactLawPoint
-      results() const;
-      std::vector<std::pair<double, double>>
-      pressure_profile() const;
-      /// P / R (disk) or P / R^2 (sphere).
-      double
-      pressure_unit() const;
-      /// The deformed state with stresses; returns the .pvtu's name.
-      std::string
-      write_state(const std::string &directory, unsigned int index) const;
-
-    private:
-      /// R(u) = K u - f + contact, constrained entries zero; tangent if asked.
-      ContactState
-      residual(const PETScWrappers::MPI::Vector &u,
-               PETScWrappers::MPI::Vector       &r,
-               bool                              with_tangent);
-
-      const Parameters                                   &parameters;
-      const double                                        load;
-      const std::unique_ptr<Reference::WallContactTheory> theory;
-      /// P, and the part of it the computed domain carries.
-      const double                            total_force;
-      const double                            domain_force;
-      MPI_Comm                                communicator;
-      parallel::distributed::Triangulation<2> triangulation;
-      ElasticityOperator<2>                   op;
-      std::unique_ptr<ContactOperator>        contact;
-      PETScWrappers::MPI::Vector              body_force;
-      PETScWrappers::MPI::Vector              solution;
-      unsigned int                            iterations = 0;
-      double                                  h_contact  = 0.;
-    };
-
-    ContactProblem::ContactProblem(const Parameters &parameters,
-                                   const double      load,
-                                   MPI_Comm          communicator)
-        : parameters(parameters)
-        , load(load)
-        , theory(Reference::wall_contact_theory(
-            parameters.geometry.is_axisymmetric()))
-        , total_force(
-            load *
-            theory->force_unit(parameters.material.in_plane_young_modulus(),
-                               parameters.geometry.radius()))
-        , domain_force(parameters.geometry.domain_share() * total_force)
-        , communicator(communicator)
-        , triangulation(communicator,
-                        Triangulation<2>::limit_level_difference_at_vertices)
-        , op(parameters.finite_element.degree)
-    {
-      const auto &geometry = parameters.geometry;
-      parameters.task_parameters<QuasistaticContact>().create_mesh(
-        parameters, load, triangulation);
-      op.setup(triangulation, geometry, true);
-      op.assemble(parameters.material);
-
-      h_contact             = ContactOperator::smallest_edge_face(op);
-      const RigidWall<2> wall = parameters.contact.wall();
-      contact               = std::make_unique<ContactOperator>(
-        op,
-        wall,
-        parameters.contact.law({parameters.material.in_plane_young_modulus(),
-                                              h_contact,
-                                              geometry.radius()}),
-        geometry.center());
-
-      // Uniform body force toward the wall, P in total on the whole body:
-      // P / 2 on the half disk, P on a sphere's meridian (whose integrals
-      // are over the sphere), divided by the discrete area or volume so
-      // that the force applied is exactly that.
-      body_force = op.create_vector();
-      op.assemble_body_force(-domain_force / op.volume() * wall.normal,
-                             body_force);
-      solution = op.create_vector();
-    }
-
-    ContactState
-    ContactProblem::residual(const PETScWrappers::MPI::Vector &u,
-                             PETScWrappers::MPI::Vector       &r,
-                             const bool                        with_tangent)
-    {
-      op.stiffness_matrix().vmult(r, u);
-      r -= body_force;
-      auto *tangent = with_tangent ? &op.tangent_reset_to_stiffness() : nullptr;
-      const ContactState state =
-        contact->assemble(op.create_ghosted(u), &r, tangent);
-      r.compress(VectorOperation::add);
-      if (tangent != nullptr)
-        tangent->compress(VectorOperation::add);
-      op.get_constraints().set_zero(r);
-      return state;
-    }
-
-    unsigned int
-    ContactProblem::solve(const double       initial_compression,
-                          const double       tolerance,
-                          const unsigned int max_iterations)
-    {
-      const RigidWall<2> wall = parameters.contact.wall();
-      VectorTools::interpolate(
-        op.get_mapping(),
-        op.get_dof_handler(),
-        Functions::ConstantFunction<2>(std::vector<double>{
-          -initial_compression * parameters.geometry.radius() * wall.normal[0],
-          -initial_compression * parameters.geometry.radius() *
-            wall.normal[1]}),
-        solution);
-      op.get_constraints().distribute(solution);
-
-      PETScWrappers::MPI::Vector r       = op.create_vector(),
-                                 r_trial = op.create_vector(),
-                                 du      = op.create_vector(),
-                                 trial   = op.create_vector();
-      const double force_scale           = body_force.l2_norm();
-
-      std::unique_ptr<Factorization> tangent;
-      residual(solution, r, true);
-      for (iterations = 0; iterations < max_iterations; ++iterations)
-        {
-          if (r.l2_norm() <= tolerance * force_scale)
-            return iterations;
-          // Newton step with the consistent tangent (residual() left it),
-          // factorized as the impact's matrices are; its pattern stays, so
-          // after the first step only the numeric factorization is redone.
-          if (!tangent)
-            tangent = std::make_unique<Factorization>(
-              op.tangent_matrix(),
-              communicator,
-              op.get_dof_handler().get_fe().n_components());
-          else
-            tangent->refactorize({{1., &op.tangent_matrix()}});
-          r *= -1.;
-          tangent->solve(r, du);
-          r *= -1.;
-          op.get_constraints().distribute(du);
-
-          // The energy is convex along du; its slope is r(u + s du) . du.
-          // Minimize it: s = 1 if the slope there is still negative, else
-          // the slope's root in (0, 1) by regula falsi (Illinois).
-          auto slope = [&](const double s) {
-            trial = solution;
-            trial.add(s, du);
-            residual(trial, r_trial, false);
-            return r_trial * du;
-          };
-          double step = 1.;
-          double s0 = 0., f0 = r * du, s1 = 1., f1 = slope(1.);
-          if (f1 > 0.)
-            for (unsigned int k = 0; k < 40; ++k)
-              {
-                step           = s1 - f1 * (s1 - s0) / (f1 - f0);
-                const double f = slope(step);
-                if (std::abs(f) <= 1e-3 * std::abs(r * du))
-                  break;
-                if ((f > 0.) == (f1 > 0.))
-                  f0 *= 0.5; // Illinois: keep the other end moving
-                else
-                  {
-                    s0 = s1;
-                    f0 = f1;
-                  }
-                s1 = step;
-                f1 = f;
-              }
-          trial = solution;
-          trial.add(step, du);
-          solution = trial;
-          residual(solution, r, true);
-        }
-      if (r.l2_norm() <= tolerance * force_scale)
-        return iterations;
-      throw RunError(
-        "quasistatic contact: Newton's method did not converge for load " +
-        Utilities::to_string(load) + " in " + std::to_string(max_iterations) +
-        " iterations (relative residual " +
-        Utilities::to_string(r.l2_norm() / force_scale) + ")");
-    }
-
-    ContactLawPoint
-    ContactProblem::results() const
-    {
-      const auto        &geometry = parameters.geometry;
-      const RigidWall<2> wall     = parameters.contact.wall();
-      const double       R        = geometry.radius();
-      const auto         u        = op.create_ghosted(solution);
-      const ContactState state    = contact->assemble(u, nullptr, nullptr);
-
-      ContactLawPoint point;
-      point.load      = load;
-      point.delta_com = -(op.mean_displacement(u) * wall.normal) / R;
-      const Tensor<1, 2> u_contact =
-        op.vertex_displacement(u, geometry.center() - R * wall.normal);
-      const Tensor<1, 2> u_far =
-        op.vertex_displacement(u, geometry.center() + R * wall.normal);
-      point.delta_diameter    = ((u_contact - u_far) * wall.normal) / R;
-      point.half_width        = state.half_width() / R;
-      point.penetration       = state.max_penetration / R;
-      point.force_balance     = state.force / domain_force - 1.;
-      point.h_contact         = h_contact / R;
-      point.n_dofs            = op.get_dof_handler().n_dofs();
-      point.newton_iterations = iterations;
-
-      // Where the body first yields: the largest von Mises stress against
-      // Hertz's p0 and a.
-      const StressPeak   peak          = largest_von_mises(op.get_mapping(),
-                                                op.get_dof_handler(),
-                                                {parameters.material},
-                                                u);
-      const double       a             = theory->half_width(load) * R;
-      const Point<2>     contact_point = geometry.center() - R * wall.normal;
-      const Tensor<1, 2> offset        = peak.location - contact_point;
-      const double       depth         = offset * wall.normal;
-      point.von_mises_max =
-        peak.von_mises / (theory->pressure(0., load) * pressure_unit());
-      point.von_mises_depth  = depth / a;
-      point.von_mises_offset = (offset - depth * wall.normal).norm() / a;
-      return point;
-    }
-
-    std::vector<std::pair<double, double>>
-    ContactProblem::pressure_profile() const
-    {
-      return contact->pressure_profile(op.create_ghosted(solution));
-    }
-
-    double
-    ContactProblem::pressure_unit() const
-    {
-      return theory->pressure_unit(total_force, parameters.geometry.radius());
-    }
-
-    std::string
-    ContactProblem::write_state(const std::string &directory,
-                                const unsigned int index) const
-    {
-      return write_deformed_state(op,
-                                  {parameters.material},
-                                  op.create_ghosted(solution),
-                                  directory,
-                                  "contact",
-                                  index);
-    }
   } // namespace
 
   void
@@ -364,6 +76,13 @@ namespace DiskImpact
                       Patterns::Integer(1, 1000),
                       "Newton iterations allowed per load before the run "
                       "stops with an error.");
+    prm.declare_entry("Indentation steps",
+                      "20",
+                      Patterns::Integer(1, 10000),
+                      "An elastic-plastic body ('Yield stress' > 0) is "
+                      "loaded to the largest of 'Loads' in this many equal "
+                      "steps, unloaded in as many and left at load 0 "
+                      "(indentation.csv); the other loads are not used.");
     prm.leave_subsection();
   }
 
@@ -376,6 +95,7 @@ namespace DiskImpact
     grading                 = prm.get_double("Grading");
     newton_tolerance        = prm.get_double("Newton tolerance");
     max_newton_iterations   = prm.get_integer("Maximum Newton iterations");
+    indentation_steps       = prm.get_integer("Indentation steps");
     prm.leave_subsection();
     for (const double load : loads)
       require(load > 0. && load <= 0.05,
@@ -431,6 +151,12 @@ namespace DiskImpact
   {
     if (parameters.partner.is_body())
       return run_pair(parameters, communicator);
+    if (parameters.material.is_plastic())
+      return QuasistaticIndentation{largest_load(),
+                                    indentation_steps,
+                                    newton_tolerance,
+                                    max_newton_iterations}
+        .run(parameters, communicator);
     ConditionalOStream pcout(std::cout,
                              Utilities::MPI::this_mpi_process(communicator) ==
                                0);
@@ -468,13 +194,15 @@ namespace DiskImpact
              "DoFs   p0/Y first yield\n";
     for (unsigned int i = 0; i < loads.size(); ++i)
       {
-        ContactProblem problem(parameters, loads[i], communicator);
+        WallContactProblem problem(parameters,
+                                   loads[i],
+                                   loads[i],
+                                   communicator);
         // Start from the rigid translation whose overlap with the wall is
         // as wide as the Hertz contact: depth a^2 / (2 R).
         const double a_hertz = theory->half_width(loads[i]);
-        problem.solve(0.5 * a_hertz * a_hertz,
-                      newton_tolerance,
-                      max_newton_iterations);
+        problem.translate(0.5 * a_hertz * a_hertz);
+        problem.solve(newton_tolerance, max_newton_iterations);
         const ContactLawPoint p   = problem.results();
         const double constant_com = theory->constant_from(p.load, p.delta_com);
         const double constant_diameter =

@@ -41,7 +41,8 @@ namespace DiskImpact
    * point so the elements across the whole Hertz half-width are small, then
    * Newton's method with a backtracking line search on the penalty contact
    * problem. Writes contact_law.csv, pressure_profile.csv and the deformed
-   * states (contact.pvd).
+   * states (contact.pvd). An elastic-plastic body is loaded to the
+   * largest of the loads and unloaded instead (QuasistaticIndentation).
    */
   class QuasistaticContact
   {
@@ -79,5 +80,6 @@ namespace DiskImpact
     double              grading                 = 0.3;
     double              newton_tolerance        = 1e-10;
     unsigned int        max_newton_iterations   = 30;
+    unsigned int        indentation_steps       = 20;
   };
 } // namespace DiskImpact

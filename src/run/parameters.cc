@@ -231,8 +231,8 @@ namespace DiskImpact
           continue;
         require(task().traits.plasticity,
                 "Material: 'Yield stress' > 0 (an elastic-plastic body) is "
-                "computed by the tasks impact, sweep and impact convergence so "
-                "far, not by '" +
+                "computed by the tasks impact, sweep, impact convergence and "
+                "quasistatic contact so far, not by '" +
                   run.task + "'");
         require(geometry.is_sphere() || geometry.dimension() == 3 ||
                   body.plane_model() == PlaneModel::plane_strain,

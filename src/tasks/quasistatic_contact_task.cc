@@ -16,9 +16,13 @@ namespace DiskImpact
       task.name        = "quasistatic contact";
       task.description = "the half body pressed on the wall (or its partner) "
                          "by a body force, the contact law delta(P) "
-                         "(contact_law.csv).";
+                         "(contact_law.csv); an elastic-plastic body loaded "
+                         "and unloaded (indentation.csv).";
       task.traits.partner_body = true;
+      task.traits.plasticity   = true;
       task.result_files        = {"contact_law.csv",
+                                  "indentation.csv",
+                                  "indentation_summary.csv",
                                   "pressure_profile.csv",
                                   "contact.pvd",
                                   "contact_*.vtu",
@@ -37,6 +41,12 @@ namespace DiskImpact
         require(parameters.contact.law_name() == "penalty",
                 "Task 'quasistatic contact' needs 'Law = penalty' in "
                 "subsection Contact");
+        require(!parameters.partner.is_body() ||
+                  (!parameters.material.is_plastic() &&
+                   !parameters.partner.material().is_plastic()),
+                "Task 'quasistatic contact': an elastic-plastic body "
+                "('Yield stress' > 0) is pressed on the wall, not on a "
+                "partner body, so far");
       };
       task.build_largest_mesh = [](const Parameters &parameters,
                                    Triangulation<2> &mesh,

@@ -23,32 +23,14 @@ import math
 import sys
 
 from scipy.integrate import quad
-from scipy.optimize import minimize_scalar
+
+from hertz_yield import first_yield_pressure_ratio
 
 path, body, yield_strain, tolerance = (sys.argv[1], sys.argv[2],
                                        float(sys.argv[3]), float(sys.argv[4]))
 nu = 0.3
 
-
-def sphere_axis(s):
-    sigma_r = -((1 + nu) * (1 - s * math.atan(1 / s)) - 0.5 / (1 + s * s))
-    sigma_z = -1 / (1 + s * s)
-    return abs(sigma_r - sigma_z)
-
-
-def half_plane_axis(z):
-    m = math.sqrt(1 + z * z)
-    sxx = -(m + z * z / m - 2 * z)
-    szz = -1 / m
-    syy = nu * (sxx + szz)
-    return math.sqrt(0.5 * ((sxx - syy) ** 2 + (syy - szz) ** 2 +
-                            (szz - sxx) ** 2))
-
-
-field = sphere_axis if body == "sphere" else half_plane_axis
-peak = minimize_scalar(lambda z: -field(z), bounds=(0.05, 2.0),
-                       method="bounded", options={"xatol": 1e-10})
-ratio = 1 / field(peak.x)
+ratio, depth = first_yield_pressure_ratio(body, nu)
 p0 = ratio * yield_strain  # over E* or E2
 if body == "sphere":
     # F = (4/3) sqrt(R) delta^{3/2}, m = 4 pi / 3 (R = E* = rho = 1);
@@ -65,7 +47,7 @@ else:
                 0, x_y)[0]
     mass = math.pi
 v_y = math.sqrt(2 * work / mass)
-print(f"{body}: first yield at p0/Y = {ratio:.5f}, depth {peak.x:.4f} a; "
+print(f"{body}: first yield at p0/Y = {ratio:.5f}, depth {depth:.4f} a; "
       f"v_y = {v_y:.6e} c")
 
 failures = 0

@@ -1,8 +1,9 @@
 #!/usr/bin/python3
 """Two identical bodies at the relative speed 2v against one body on the
 wall at v (tests/regression/pair_identical_disks.prm): the same epsilon,
-contact time and peak force, twice the approach, equal vibration energies,
-momentum and impulse balances.
+contact time and peak force (and plastic work, of E(0), where the bodies
+yield), twice the approach, equal vibration energies, momentum and impulse
+balances.
 
 usage: check_pair_vs_wall.py PAIR_SUMMARY.csv WALL_SUMMARY.csv TOL
 """
@@ -27,6 +28,9 @@ close("relative speed / 2", float(pair["velocity"]) / 2, float(wall["velocity"])
 for name in ["epsilon", "contact_time", "force_max", "time_step"]:
     close(name, float(pair[name]), float(wall[name]), tol)
 close("delta_max / 2", float(pair["delta_max"]) / 2, float(wall["delta_max"]), tol)
+if float(wall.get("plastic_work") or "nan") > 0:
+    # Elastic-plastic bodies: each yields as the body on the wall.
+    close("plastic_work", float(pair["plastic_work"]), float(wall["plastic_work"]), tol)
 
 
 def close_absolute(name, a, b, tolerance):

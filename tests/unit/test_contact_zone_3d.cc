@@ -9,6 +9,7 @@
 #include "contact/contact_zone.h"
 #include "contact/penalty_law.h"
 #include "elasticity/elasticity_operator.h"
+#include "interpolated_field.h"
 #include "material/material.h"
 
 #include <deal.II/base/function.h>
@@ -76,13 +77,7 @@ namespace
     dealii::PETScWrappers::MPI::Vector
     interpolate(const dealii::Function<3> &f) const
     {
-      auto u = op.create_vector();
-      dealii::VectorTools::interpolate(op.get_mapping(),
-                                       op.get_dof_handler(),
-                                       f,
-                                       u);
-      op.get_constraints().distribute(u);
-      return u;
+      return interpolated_field(op, f);
     }
 
     BodyGeometry                                    geometry;
