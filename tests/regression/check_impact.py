@@ -9,6 +9,7 @@ usage: check_impact.py summary.csv [--epsilon E TOL] [--energy TOL]
 """
 import argparse
 import csv
+import os
 import sys
 
 p = argparse.ArgumentParser()
@@ -32,9 +33,13 @@ p.add_argument("--solves-per-step", type=float,
                     "factorized matrix per time step)")
 p.add_argument("--plastic-balance", type=float,
                help="bound on |epsilon^2 + plastic_work + vibration_fraction "
-                    "- 1|: an elastic-plastic impact's energy after it, from "
-                    "the rebound velocity, the quadrature points' plastic "
-                    "work and the body's vibration, and plastic_work > 0")
+                    "(+ viscous work) - 1|: an elastic-plastic impact's "
+                    "energy after it, from the rebound velocity, the "
+                    "quadrature points' plastic work and the body's "
+                    "vibration, and plastic_work > 0; a viscoelastic body's "
+                    "viscous work from the last row of impact.csv beside "
+                    "summary.csv (energy_dissipated over the first row's "
+                    "energy_total)")
 a = p.parse_args()
 s = next(csv.DictReader(open(a.summary, newline="")))
 checks = []
@@ -43,7 +48,13 @@ if a.epsilon:
                    abs(float(s["epsilon"]) - a.epsilon[0]) <= a.epsilon[1]))
 if a.plastic_balance is not None:
     eps, plastic = float(s["epsilon"]), float(s["plastic_work"])
-    balance = eps ** 2 + plastic + float(s["vibration_fraction"]) - 1
+    history = os.path.join(os.path.dirname(a.summary), "impact.csv")
+    viscous = 0.0
+    if os.path.exists(history):
+        rows = list(csv.DictReader(open(history, newline="")))
+        viscous = (float(rows[-1]["energy_dissipated"]) /
+                   float(rows[0]["energy_total"]))
+    balance = eps ** 2 + plastic + viscous + float(s["vibration_fraction"]) - 1
     checks.append(("plastic balance", balance,
                    abs(balance) <= a.plastic_balance and plastic > 0))
 if a.energy is not None:
