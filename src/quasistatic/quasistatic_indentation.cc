@@ -125,7 +125,7 @@ namespace DiskImpact
         plastic_work += problem.accept();
         const auto [delta_com, delta_diameter] = problem.approach();
         const ContactState    state            = problem.contact_state();
-        const ContactEnergies energies         = problem.energies();
+        const double          elastic_energy   = problem.elastic_energy();
         const double          alpha = problem.largest_plastic_strain();
 
         // The work of the body force and of the support (wall or hold) by
@@ -143,8 +143,7 @@ namespace DiskImpact
         c_old = c;
         largest_work = std::max(largest_work, work);
         const double error =
-          (work - support_work - energies.elastic - plastic_work) /
-          largest_work;
+          (work - support_work - elastic_energy - plastic_work) / largest_work;
         largest_error = std::max(largest_error, std::abs(error));
         delta_max     = std::max(delta_max, delta_com);
         if (alpha == 0.)
@@ -161,13 +160,12 @@ namespace DiskImpact
               delta_diameter,
               state.half_width() / R,
               state.max_penetration / R,
-              force > 0. ? state.force / (problem.domain_share() * force) -
-                             1. :
+              force > 0. ? state.force / (problem.domain_share() * force) - 1. :
                            0.,
               plastic_work / energy_unit,
               alpha,
-              energies.elastic / energy_unit,
-              energies.contact / energy_unit,
+              elastic_energy / energy_unit,
+              state.energy / problem.domain_share() / energy_unit,
               work / energy_unit,
               support_work / energy_unit,
               error})

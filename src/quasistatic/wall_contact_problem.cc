@@ -144,17 +144,26 @@ namespace DiskImpact
     op.get_constraints().distribute(solution);
   }
 
-  void
-  WallContactProblem::add_hold(const PETScWrappers::MPI::Vector &u,
-                               PETScWrappers::MPI::Vector       &r,
-                               PETScWrappers::MPI::SparseMatrix *tangent) const
+  ContactState
+  WallContactProblem::add_support(
+    const PETScWrappers::MPI::Vector &u,
+    PETScWrappers::MPI::Vector       &r,
+    PETScWrappers::MPI::SparseMatrix *tangent) const
   {
-    if (!owns_hold)
-      return;
-    const double k = op.stiffness_matrix().diag_element(hold_dof);
-    r(hold_dof) += k * u(hold_dof);
+    ContactState state;
+    if (load > 0.)
+      state = contact->assemble(op.create_ghosted(u), &r, tangent);
+    else if (owns_hold)
+      {
+        const double k = op.stiffness_matrix().diag_element(hold_dof);
+        r(hold_dof) += k * u(hold_dof);
+        if (tangent != nullptr)
+          tangent->add(hold_dof, hold_dof, k);
+      }
+    r.compress(VectorOperation::add);
     if (tangent != nullptr)
-      tangent->add(hold_dof, hold_dof, k);
+      tangent->compress(VectorOperation::add);
+    return state;
   }
 
   ContactState
@@ -165,19 +174,7 @@ namespace DiskImpact
     op.stiffness_matrix().vmult(r, u);
     r -= body_force;
     auto *tangent = with_tangent ? &op.tangent_reset_to_stiffness() : nullptr;
-    ContactState state;
-    if (load > 0.)
-      state = contact->assemble(op.create_ghosted(u), &r, tangent);
-    r.compress(VectorOperation::add);
-    if (tangent != nullptr)
-      tangent->compress(VectorOperation::add);
-    if (load == 0.)
-      {
-        add_hold(u, r, tangent);
-        r.compress(VectorOperation::add);
-        if (tangent != nullptr)
-          tangent->compress(VectorOperation::add);
-      }
+    const ContactState state = add_support(u, r, tangent);
     if (plasticity)
       {
         plasticity->evaluate(u, plastic_force, true, tangent);
@@ -263,11 +260,9 @@ namespace DiskImpact
   double
   WallContactProblem::accept()
   {
-    if (!plasticity)
-      return 0.;
-    // The trial states are those of the last residual, at the solution.
-    plasticity->evaluate(solution, plastic_force);
-    return plasticity->accept() / domain_share();
+    // The trial states and f_p are those of solve()'s last residual, at
+    // the solution.
+    return plasticity ? plasticity->accept() / domain_share() : 0.;
   }
 
   std::pair<double, double>
@@ -301,14 +296,7 @@ namespace DiskImpact
   WallContactProblem::support_force_vector() const
   {
     PETScWrappers::MPI::Vector force = op.create_vector();
-    if (load > 0.)
-      contact->assemble(op.create_ghosted(solution), &force, nullptr);
-    force.compress(VectorOperation::add);
-    if (load == 0.)
-      {
-        add_hold(solution, force, nullptr);
-        force.compress(VectorOperation::add);
-      }
+    add_support(solution, force, nullptr);
     op.get_constraints().set_zero(force);
     return force;
   }
@@ -321,8 +309,8 @@ namespace DiskImpact
     return contact->assemble(op.create_ghosted(solution), nullptr, nullptr);
   }
 
-  ContactEnergies
-  WallContactProblem::energies() const
+  double
+  WallContactProblem::elastic_energy() const
   {
     // The condensed K's rows of constrained DoFs are not the energy's:
     // their entries are left out.
@@ -332,7 +320,7 @@ namespace DiskImpact
     double elastic = 0.5 * (Ku * u);
     if (plasticity)
       elastic += -(plastic_force * u) + plasticity->plastic_strain_energy();
-    return {elastic / domain_share(), contact_state().energy / domain_share()};
+    return elastic / domain_share();
   }
 
   double

@@ -28,16 +28,6 @@ namespace DiskImpact
   Reference::FirstYield
   hertz_first_yield(const Parameters &parameters);
 
-  /// The energies of a quasistatic state, of the whole body (both halves of
-  /// a half disk).
-  struct ContactEnergies
-  {
-    /// u.(K u)/2 - u.f_p + int eps_p : C : eps_p dV / 2.
-    double elastic = 0.;
-    /// The contact law's energy.
-    double contact = 0.;
-  };
-
   /**
    * A half disk or a sphere pressed on the wall by a uniform body force of
    * total P (Gerl & Zippelius 1999, section 5), solved by Newton's method
@@ -106,8 +96,10 @@ namespace DiskImpact
     /// The wall's contact state at the current displacement.
     ContactState
     contact_state() const;
-    ContactEnergies
-    energies() const;
+    /// u.(K u)/2 - u.f_p + int eps_p : C : eps_p dV / 2 (the residual
+    /// stresses' energy with it), of the whole body.
+    double
+    elastic_energy() const;
     /// The largest equivalent plastic strain (0 for an elastic body).
     double
     largest_plastic_strain() const;
@@ -138,12 +130,13 @@ namespace DiskImpact
     residual(const dealii::PETScWrappers::MPI::Vector &u,
              dealii::PETScWrappers::MPI::Vector       &r,
              bool                                      with_tangent);
-    /// The spring that holds the point nearest the wall at load 0 (its
-    /// stiffness that of K's diagonal there): into @p r and @p tangent.
-    void
-    add_hold(const dealii::PETScWrappers::MPI::Vector &u,
-             dealii::PETScWrappers::MPI::Vector       &r,
-             dealii::PETScWrappers::MPI::SparseMatrix *tangent) const;
+    /// The support's term into @p r and @p tangent (both compressed): the
+    /// contact, or at load 0 the spring that holds the point nearest the
+    /// wall (its stiffness that of K's diagonal there).
+    ContactState
+    add_support(const dealii::PETScWrappers::MPI::Vector &u,
+                dealii::PETScWrappers::MPI::Vector       &r,
+                dealii::PETScWrappers::MPI::SparseMatrix *tangent) const;
 
     const Parameters                                   &parameters;
     double                                              load;
