@@ -78,6 +78,8 @@ namespace DiskImpact
     plasticity          = &field;
     plastic_force       = op.create_vector();
     trial_plastic_force = op.create_vector();
+    if (integrator.plastic_newton())
+      tangent.reinit(op.stiffness_matrix());
   }
 
   template <int dim>
@@ -111,35 +113,76 @@ namespace DiskImpact
   ContactStepper<dim>::factorize(const double step)
   {
     dt = step;
-    if (solver)
-      {
-        factorizations_before += solver->n_factorizations();
-        solves_before += solver->n_triangular_solves();
-        solve_time_before += solver->triangular_solve_time();
-      }
+    // The old solvers' columns belong to the old factorizations (the
+    // tangent's was for the old step too).
+    retire(solver);
+    retire(tangent_solver);
+    solver = factorized_solver(op.stiffness_matrix(), factorization);
+    solver->add_dofs(zone.active_dofs());
+    current = solver.get();
+  }
+
+  template <int dim>
+  std::unique_ptr<CondensedSolver>
+  ContactStepper<dim>::factorized_solver(
+    const PETScWrappers::MPI::SparseMatrix &stiffness,
+    std::shared_ptr<Factorization>         &into) const
+  {
     // A = cK K + cM M (+ cD D): M's pattern is a subset of K's, D's is K's.
-    MatrixSum A{{integrator.stiffness_coefficient(), &op.stiffness_matrix()},
+    MatrixSum A{{integrator.stiffness_coefficient(), &stiffness},
                 {integrator.mass_coefficient(dt), &op.mass_matrix()}};
     if (op.has_damping())
       A.push_back({integrator.damping_coefficient(dt),
                    &op.damping_matrix(),
                    SAME_NONZERO_PATTERN});
-
-    // The old solver's columns belong to the old factorization.
-    solver.reset();
-    if (factorization)
-      factorization->refactorize(A);
+    if (into)
+      into->refactorize(A);
     else
-      factorization = std::make_shared<Factorization>(
+      into = std::make_shared<Factorization>(
         A,
         communicator,
         op.get_dof_handler().get_fe().n_components(),
         dim == 3);
-    solver = std::make_unique<CondensedSolver>(factorization,
-                                               op.locally_owned_dofs(),
-                                               communicator);
-    solver->set_observed_dofs(zone.candidate_dofs());
-    solver->add_dofs(zone.active_dofs());
+    auto made = std::make_unique<CondensedSolver>(into,
+                                                  op.locally_owned_dofs(),
+                                                  communicator);
+    made->set_observed_dofs(zone.candidate_dofs());
+    return made;
+  }
+
+  template <int dim>
+  void
+  ContactStepper<dim>::retire(std::unique_ptr<CondensedSolver> &retired)
+  {
+    if (!retired)
+      return;
+    factorizations_before += retired->n_factorizations();
+    solves_before += retired->n_triangular_solves();
+    solve_time_before += retired->triangular_solve_time();
+    if (current == retired.get())
+      current = nullptr;
+    retired.reset();
+  }
+
+  template <int dim>
+  void
+  ContactStepper<dim>::use_solver(CondensedSolver &next)
+  {
+    // Both solvers append the zone's DoFs in the order the zone activates
+    // them, so C of the one behind is a prefix of the zone's.
+    const auto        &active = zone.active_dofs();
+    const unsigned int n      = next.n_contact_dofs();
+    if (n < active.size())
+      next.add_dofs(
+        std::vector<unsigned int>(active.begin() + n, active.end()));
+    current = &next;
+  }
+
+  template <int dim>
+  bool
+  ContactStepper<dim>::on_tangent() const
+  {
+    return tangent_solver && current == tangent_solver.get();
   }
 
   template <int dim>
@@ -233,37 +276,58 @@ namespace DiskImpact
   bool
   ContactStepper<dim>::attempt_plastic_step()
   {
-    // u1 is linear in the load (1 - af) f_p given the contact, so each
-    // iterate costs one solve with the elastic factorization and a contact
-    // solve; the return mapping at u1 gives the next f_p. (Perfect
-    // plasticity makes the fixed point slow to contract: a deep history.)
+    // u1 solves A u1 = base + cK f_p(u1) (+ the contact); an iterate solves
+    // it with the load x for f_p(u1): one solve and a contact solve. On the
+    // tangent A + cK T, x = f_p(u_k) + T u_k. Either way x_{k+1} - x_k is
+    // the residual of u_{k+1} over cK. (Perfect plasticity makes the
+    // elastic fixed point slow to contract: a deep history.)
     const PETScWrappers::MPI::Vector base = b;
-    PETScWrappers::MPI::Vector       x    = plastic_force;
-    // The start: f_p extrapolated linearly from the last two steps.
-    if (previous_plastic_force.size() == x.size())
+    const double                     cK   = integrator.stiffness_coefficient();
+    PETScWrappers::MPI::Vector       x    = plastic_force, product_T;
+    // The size the tolerance is relative to: f_p's guess (on the tangent,
+    // f_p(u_k) of the linearization).
+    double guess_norm = plastic_force.l2_norm();
+    if (on_tangent())
+      {
+        // Newton from the step's start.
+        plastic_tangent_product(u, product_T);
+        x += product_T;
+      }
+    else if (previous_plastic_force.size() == x.size())
+      // f_p extrapolated linearly from the last two steps.
       x.sadd(2., -1., previous_plastic_force);
-    AndersonAcceleration<PETScWrappers::MPI::Vector> acceleration(15);
+    auto acceleration =
+      std::make_unique<AndersonAcceleration<PETScWrappers::MPI::Vector>>(15);
     for (unsigned int k = 1;; ++k)
       {
         b = base;
-        b.add(integrator.stiffness_coefficient(), x);
+        b.add(cK, x);
         if (!attempt_contact_step())
           return false;
         // The return mapping: on all cells first, then on the cells near
         // yield; a step ends with one on all cells.
         plasticity->evaluate(u_new, trial_plastic_force, k == 1);
-        PETScWrappers::MPI::Vector change = trial_plastic_force;
-        change -= x;
+        if (on_tangent())
+          plastic_tangent_product(u_new, product_T);
+        const auto residual = [&]() {
+          PETScWrappers::MPI::Vector change = trial_plastic_force;
+          if (on_tangent())
+            change += product_T;
+          change -= x;
+          return change;
+        };
+        PETScWrappers::MPI::Vector change = residual();
+        if (!on_tangent())
+          guess_norm = x.l2_norm();
         const auto converged = [&]() {
           return change.l2_norm() <=
                  integrator.plastic_tolerance() *
-                   std::max(trial_plastic_force.l2_norm(), x.l2_norm());
+                   std::max(trial_plastic_force.l2_norm(), guess_norm);
         };
         if (k > 1 && converged())
           {
             plasticity->evaluate(u_new, trial_plastic_force, true);
-            change = trial_plastic_force;
-            change -= x;
+            change = residual();
           }
         if (converged())
           {
@@ -272,8 +336,80 @@ namespace DiskImpact
           }
         if (k == integrator.max_plastic_iterations())
           return false;
-        x = acceleration.next(x, change);
+        guess_norm = trial_plastic_force.l2_norm();
+        // Leave the tangent when no point yields (unloading), or when
+        // Newton still fails after a fresh tangent: the yield set then
+        // flips between iterates (points at the plastic zone's border
+        // loading and unloading) and Newton cycles; the elastic fixed
+        // point converges.
+        const bool leave_tangent =
+          on_tangent() &&
+          (plasticity->n_yielding_points() == 0 || k == 2 * newton_stall);
+        if (tangent_is_stale(k) || leave_tangent)
+          {
+            // Linearize at u_k afresh: the history belongs to the old map.
+            if (leave_tangent)
+              use_solver(*solver);
+            else
+              refresh_tangent(u_new);
+            x = trial_plastic_force;
+            if (on_tangent())
+              {
+                plastic_tangent_product(u_new, product_T);
+                x += product_T;
+              }
+            acceleration = std::make_unique<
+              AndersonAcceleration<PETScWrappers::MPI::Vector>>(15);
+            continue;
+          }
+        x = acceleration->next(x, change);
       }
+  }
+
+  template <int dim>
+  bool
+  ContactStepper<dim>::tangent_is_stale(const unsigned int k) const
+  {
+    if (!integrator.plastic_newton() || plasticity->n_yielding_points() == 0 ||
+        k >= 2 * newton_stall)
+      return false;
+    if (!on_tangent())
+      return true;
+    // The zone's change shows after the first iterate of a step; a stall
+    // (several iterates without convergence) means the tangent is off.
+    return (k == 1 && plasticity->n_changed_since_tangent() > 0) ||
+           k == newton_stall;
+  }
+
+  template <int dim>
+  void
+  ContactStepper<dim>::refresh_tangent(const PETScWrappers::MPI::Vector &at)
+  {
+    tangent.copy_from(op.stiffness_matrix());
+    plasticity->evaluate(at, trial_plastic_force, true, &tangent);
+    if (plasticity->n_yielding_points() == 0)
+      {
+        use_solver(*solver);
+        return;
+      }
+    retire(tangent_solver);
+    tangent_solver = factorized_solver(tangent, tangent_factorization);
+    ++tangent_factorizations;
+    use_solver(*tangent_solver);
+  }
+
+  template <int dim>
+  void
+  ContactStepper<dim>::plastic_tangent_product(
+    const PETScWrappers::MPI::Vector &x,
+    PETScWrappers::MPI::Vector       &Tx) const
+  {
+    if (Tx.size() != x.size())
+      Tx = op.create_vector();
+    constraint_map.zeroed(x, work);
+    tangent.vmult(Tx, work);
+    op.stiffness_matrix().vmult(product, work);
+    Tx -= product;
   }
 
   template <int dim>
@@ -283,10 +419,10 @@ namespace DiskImpact
     // The response without contact force y: one solve with the factorized
     // matrix, into u_new. The end state is y + X P(u1_C): a dense system
     // on C.
-    solver->solve(b, u_new);
+    current->solve(b, u_new);
     // The candidates' DoFs are unconstrained (ConstrainedRow), so y needs
     // its constraints distributed only as part of the end state below.
-    const Vector<double> y_D = solver->observe(u_new);
+    const Vector<double> y_D = current->observe(u_new);
     return exact_constraint ? attempt_exact_constraint_step(y_D) :
                               attempt_penalty_step(y_D);
   }
@@ -320,21 +456,21 @@ namespace DiskImpact
         applied            = acceleration.next(applied, change);
         const auto missing = zone.inactive_dofs_of(applied);
         zone.activate(missing);
-        solver->add_dofs(missing);
+        current->add_dofs(missing);
         y_D_corrected = y_D;
         y_D_corrected +=
-          solver->observed_response(zone.constraint_force(applied));
+          current->observed_response(zone.constraint_force(applied));
         y_D_corrected.add(-2.,
                           massless->response_on_candidates(point_rows,
                                                            applied));
       }
     if (applied.linfty_norm() > 0.)
       {
-        solver->add_columns(zone.constraint_force(applied), u_new);
+        current->add_columns(zone.constraint_force(applied), u_new);
         massless->add_response(point_rows, applied, -2., u_new);
       }
     if (P.size() > 0)
-      solver->add_columns(P, u_new);
+      current->add_columns(P, u_new);
     constraint_map.distribute(u_new);
     state = zone.constraint_state(point_forces,
                                   point_forces_new,
@@ -358,7 +494,7 @@ namespace DiskImpact
     if (turning)
       {
         if (rotation_on_D.size() == 0)
-          rotation_on_D = solver->observe(rotation_field);
+          rotation_on_D = current->observe(rotation_field);
         theta_y = (rotation_momentum * u_new) / inertia;
         scale   = 1. / (integrator.mass_coefficient(dt) * inertia);
       }
@@ -372,7 +508,7 @@ namespace DiskImpact
         // found so far take part: their DoFs join C (one solve each).
         const auto missing = zone.dofs_to_activate({&u_D, &y_D, &u1_D});
         zone.activate(missing);
-        solver->add_dofs(missing);
+        current->add_dofs(missing);
         if (zone.n_active_dofs() == 0)
           break;
         const unsigned int   n    = zone.n_active_dofs();
@@ -395,7 +531,7 @@ namespace DiskImpact
             w_C = zone.restrict_to_active(rotation_on_D);
             // S on C bordered by theta's row and column.
             S.reinit(n + 1, n + 1);
-            S.fill(solver->condensed_matrix());
+            S.fill(current->condensed_matrix());
             for (unsigned int i = 0; i < n; ++i)
               S(i, n) = S(n, i) = scale * w_C[i];
             S(n, n) = scale;
@@ -406,22 +542,22 @@ namespace DiskImpact
           integrator.max_newton_iterations() * (zone.has_friction() ? 10 : 1);
         const bool converged =
           turning ?
-            CondensedSolver::solve_condensed(
-              S,
-              y_C,
-              force,
-              integrator.newton_tolerance() * gap_scale,
-              max_iterations,
-              u1_C,
-              iterations,
-              true) :
-            solver->solve_condensed(y_C,
-                                    force,
-                                    integrator.newton_tolerance() * gap_scale,
-                                    max_iterations,
-                                    u1_C,
-                                    iterations,
-                                    zone.has_friction());
+            CondensedSolver::solve_condensed(S,
+                                             y_C,
+                                             force,
+                                             integrator.newton_tolerance() *
+                                               gap_scale,
+                                             max_iterations,
+                                             u1_C,
+                                             iterations,
+                                             true) :
+            current->solve_condensed(y_C,
+                                     force,
+                                     integrator.newton_tolerance() * gap_scale,
+                                     max_iterations,
+                                     u1_C,
+                                     iterations,
+                                     zone.has_friction());
         if (!converged)
           return false;
         newton_iterations += iterations;
@@ -436,14 +572,14 @@ namespace DiskImpact
             theta_new = theta_y + scale * (w_C * P + Q);
           }
         u1_D = y_D;
-        u1_D += solver->observed_response(P);
+        u1_D += current->observed_response(P);
         if (turning)
           u1_D.add(scale * Q, rotation_on_D);
         if (zone.dofs_to_activate({&u1_D}).empty())
           break;
       }
     if (P.size() > 0)
-      solver->add_columns(P, u_new);
+      current->add_columns(P, u_new);
     if (Q != 0.)
       u_new.add(scale * Q, rotation_field);
     constraint_map.distribute(u_new);
@@ -475,20 +611,20 @@ namespace DiskImpact
       {
         const auto missing = zone.dofs_to_activate({&u_D, &y_D, &u1_D});
         zone.activate(missing);
-        solver->add_dofs(missing);
+        current->add_dofs(missing);
         point_forces_new.reinit(zone.n_points());
         if (zone.n_active_dofs() == 0)
           return true;
         const Vector<double> F0 = zone.constraint_force(point_forces);
         Vector<double> base_C   = zone.restrict_to_active(y_D); // y_C + af S F0
         Vector<double> s_f0(F0.size());
-        solver->condensed_matrix().vmult(s_f0, F0);
+        current->condensed_matrix().vmult(s_f0, F0);
         base_C.add(1. - new_weight, s_f0);
         const auto system = zone.constraint_system(base_C);
         // W = (1 - af) B S B^T.
         const unsigned int n = system.points.size();
-        FullMatrix<double> sbt(solver->n_contact_dofs(), n), W(n, n);
-        solver->condensed_matrix().mTmult(sbt, system.rows);
+        FullMatrix<double> sbt(current->n_contact_dofs(), n), W(n, n);
+        current->condensed_matrix().mTmult(sbt, system.rows);
         system.rows.mmult(W, sbt);
         W *= new_weight;
         std::vector<bool> warm(n);
@@ -505,7 +641,7 @@ namespace DiskImpact
         P *= 1. - new_weight;
         P.add(new_weight, zone.constraint_force(point_forces_new));
         u1_D = y_D;
-        u1_D += solver->observed_response(P);
+        u1_D += current->observed_response(P);
         if (zone.dofs_to_activate({&u1_D}).empty())
           return true;
       }
@@ -545,7 +681,8 @@ namespace DiskImpact
   void
   ContactStepper<dim>::update_stiffness_image()
   {
-    if (op.has_damping() || exact_constraint || zone.tracks_rotation())
+    if (op.has_damping() || exact_constraint || zone.tracks_rotation() ||
+        on_tangent())
       {
         // K u_new with u_new's constrained entries zeroed.
         constraint_map.zeroed(u_new, work);
@@ -553,13 +690,14 @@ namespace DiskImpact
       }
     else
       {
-        // The step solved A u1 = b + E_C P with A = cK K + cM M, so in the
+        // The step solved A u1 = b + E_C P with A = cK K + cM M (not the
+        // tangent's), so in the
         // unconstrained rows K u1 = (b + E_C P - cM M u1) / cK: no product
         // with K. (The constrained rows, which differ, are zeroed in u where
         // it meets them and kept to themselves by the solve.)
         stiffness_u = b;
         if (contact_force.size() > 0)
-          solver->add_forces(contact_force, stiffness_u);
+          current->add_forces(contact_force, stiffness_u);
         stiffness_u.add(-integrator.mass_coefficient(dt), mass_u_new);
         stiffness_u /= integrator.stiffness_coefficient();
       }
@@ -615,6 +753,13 @@ namespace DiskImpact
   }
 
   template <int dim>
+  unsigned int
+  ContactStepper<dim>::n_tangent_factorizations() const
+  {
+    return tangent_factorizations;
+  }
+
+  template <int dim>
   double
   ContactStepper<dim>::time() const
   {
@@ -660,21 +805,24 @@ namespace DiskImpact
   unsigned int
   ContactStepper<dim>::n_factorizations() const
   {
-    return factorizations_before + solver->n_factorizations();
+    return factorizations_before + solver->n_factorizations() +
+           (tangent_solver ? tangent_solver->n_factorizations() : 0);
   }
 
   template <int dim>
   unsigned int
   ContactStepper<dim>::n_triangular_solves() const
   {
-    return solves_before + solver->n_triangular_solves();
+    return solves_before + solver->n_triangular_solves() +
+           (tangent_solver ? tangent_solver->n_triangular_solves() : 0);
   }
 
   template <int dim>
   double
   ContactStepper<dim>::triangular_solve_time() const
   {
-    return (solve_time_before + solver->triangular_solve_time()) /
+    return (solve_time_before + solver->triangular_solve_time() +
+            (tangent_solver ? tangent_solver->triangular_solve_time() : 0.)) /
            n_triangular_solves();
   }
 
@@ -695,7 +843,7 @@ namespace DiskImpact
   unsigned int
   ContactStepper<dim>::n_contact_dofs() const
   {
-    return solver->n_contact_dofs();
+    return current->n_contact_dofs();
   }
 
   template class ContactStepper<2>;

@@ -94,12 +94,21 @@ namespace DiskImpact
 
     /**
      * An elastic-plastic body: the internal force is K u - f_p with the
-     * plastic strain's force f_p of @p field. Each step solves the fixed
-     * point f_p = F(u1(f_p)) (u1 the step's end state with the load
-     * (1 - af) f_p, one solve and a contact solve with the elastic
-     * factorization; F the return mapping at u1), by Anderson's acceleration
-     * from f_p extrapolated from the last two steps, to 'Plastic
-     * tolerance'. Call before start().
+     * plastic strain's force f_p of @p field. Each step iterates on the
+     * load x of its end state u1 (the step's solve with the load
+     * (1 - af) x, and a contact solve), x_{k+1} - x_k being the step's
+     * residual, with Anderson's acceleration to 'Plastic tolerance':
+     * - with the elastic factorization (no point yields, or 'Plastic
+     *   solver' = fixed point), x is f_p's guess, from f_p extrapolated
+     *   from the last two steps;
+     * - while points yield ('Plastic solver' = Newton), the effective
+     *   matrix holds K + T, T the consistent plastic tangent at some state
+     *   (PlasticStrainField::evaluate()), and x = f_p(u_k) + T u_k: Newton's
+     *   linearization at the last iterate. K + T is assembled and
+     *   factorized again when the set of yielding points has changed since,
+     *   or when an iteration stalls; if Newton stalls again the step goes
+     *   on with the elastic factorization.
+     * Call before start().
      */
     void
     enable_plasticity(PlasticStrainField<dim> &field);
@@ -147,6 +156,10 @@ namespace DiskImpact
     /// Plastic iterations of all steps so far (enable_plasticity()).
     unsigned int
     n_plastic_iterations() const;
+    /// Factorizations of the tangent matrix so far (enable_plasticity(),
+    /// 'Plastic solver' = Newton); n_factorizations() counts them too.
+    unsigned int
+    n_tangent_factorizations() const;
 
     /// Newton (or complementarity) iterations of all steps so far.
     unsigned int
@@ -179,10 +192,41 @@ namespace DiskImpact
     /// The step's solve with the right-hand side b, then its contact solve.
     bool
     attempt_contact_step();
-    /// attempt_step() for an elastic-plastic body: the plastic fixed point
+    /// attempt_step() for an elastic-plastic body: the plastic iteration
     /// around attempt_contact_step().
     bool
     attempt_plastic_step();
+    /// Whether the plastic iteration should assemble and factorize the
+    /// tangent at its @p k th iterate (not converged): points yield and
+    /// the elastic matrix is in use, or the plastic zone has changed since
+    /// the tangent's assembly, or the iteration stalls.
+    bool
+    tangent_is_stale(unsigned int k) const;
+    /// Assemble K + T at @p at (the trial states there, their f_p into
+    /// trial_plastic_force) and factorize the effective matrix with it for
+    /// the solves that follow; the elastic one if no point yields.
+    void
+    refresh_tangent(const dealii::PETScWrappers::MPI::Vector &at);
+    /// Solve with @p next from now on, its C brought up to the zone's
+    /// active DoFs.
+    void
+    use_solver(CondensedSolver &next);
+    /// Whether the solves use the tangent.
+    bool
+    on_tangent() const;
+    /// @p Tx = T x, T the plastic part of the tangent (K + T - K).
+    void
+    plastic_tangent_product(const dealii::PETScWrappers::MPI::Vector &x,
+                            dealii::PETScWrappers::MPI::Vector       &Tx) const;
+    /// A solver of cK @p stiffness + cM M (+ cD D) for the step dt, its
+    /// factorization made or refactorized in @p into (whose earlier
+    /// solvers must be retired), observing the candidates' DoFs; C empty.
+    std::unique_ptr<CondensedSolver>
+    factorized_solver(const dealii::PETScWrappers::MPI::SparseMatrix &stiffness,
+                      std::shared_ptr<Factorization> &into) const;
+    /// Count @p retired's factorizations and solves in the totals.
+    void
+    retire(std::unique_ptr<CondensedSolver> &retired);
     /// attempt_step() for a penalty-type law: Newton on C.
     bool
     attempt_penalty_step(const dealii::Vector<double> &y_D);
@@ -223,7 +267,10 @@ namespace DiskImpact
     const double                    gap_scale;
     MPI_Comm                        communicator;
 
-    std::unique_ptr<CondensedSolver> solver;
+    /// The solver with the effective matrix, the one with the tangent's
+    /// (enable_plasticity(), Newton) and the one the solves use.
+    std::unique_ptr<CondensedSolver> solver, tangent_solver;
+    CondensedSolver                 *current = nullptr;
     double                           dt = 0., t = 0.;
     /// The step's results so far (attempt_step()).
     ContactState state;
@@ -245,6 +292,15 @@ namespace DiskImpact
     dealii::PETScWrappers::MPI::Vector plastic_force, trial_plastic_force,
       previous_plastic_force;
     unsigned int plastic_iterations = 0;
+    /// Newton: K + T, its effective matrix's factorization (its pattern
+    /// kept from one to the next) and their number.
+    dealii::PETScWrappers::MPI::SparseMatrix tangent;
+    std::shared_ptr<Factorization>           tangent_factorization;
+    unsigned int                             tangent_factorizations = 0;
+    /// Newton iterates of a step without convergence after which the
+    /// tangent is refreshed; after twice as many the step goes on by the
+    /// elastic fixed point.
+    static constexpr unsigned int newton_stall = 4;
     /// The last step's contact force P on C (laws other than 'constraint').
     dealii::Vector<double> contact_force;
     /// M u, M v, M a (constrained entries zeroed) and their new values:

@@ -63,6 +63,9 @@ namespace DiskImpact
     plastic_tolerance() const;
     unsigned int
     max_plastic_iterations() const;
+    /// 'Plastic solver' = Newton (else the fixed point).
+    bool
+    plastic_newton() const;
     /// Throw an InputError unless a fixed 'Time step' lies within the
     /// range 'Time step fraction' allows, relative to
     /// @p contact_time_estimate.
@@ -151,6 +154,7 @@ namespace DiskImpact
     unsigned int   n_step_cuts         = 4;
     double         plastic_tol         = 1e-6;
     unsigned int   max_plastic         = 200;
+    bool           newton_plastic      = false;
     double         energy_tolerance    = 1e-6;
     double         alpha_m             = 0.5;
     double         alpha_f             = 0.5;

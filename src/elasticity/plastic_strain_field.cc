@@ -129,6 +129,7 @@ namespace DiskImpact
 
     force    = 0.;
     yielding = 0;
+    unsigned int changed = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -161,6 +162,10 @@ namespace DiskImpact
               point.trial_stress = update.stress;
               point.volume       = fe_values.JxW(q) * section.measure(x);
               yielding += update.yielded;
+              if (tangent != nullptr)
+                point.in_tangent = update.yielded;
+              else
+                changed += update.yielded != point.in_tangent;
               if (tangent != nullptr && update.yielded)
                 {
                   yielded = true;
@@ -210,6 +215,11 @@ namespace DiskImpact
     if (tangent != nullptr)
       tangent->compress(VectorOperation::add);
     yielding = Utilities::MPI::sum(yielding, dof_handler.get_communicator());
+    if (tangent == nullptr)
+      changed_since_tangent =
+        Utilities::MPI::sum(changed, dof_handler.get_communicator());
+    else
+      changed_since_tangent = 0;
   }
 
   template <int dim>
@@ -287,6 +297,13 @@ namespace DiskImpact
   PlasticStrainField<dim>::n_yielding_points() const
   {
     return yielding;
+  }
+
+  template <int dim>
+  unsigned int
+  PlasticStrainField<dim>::n_changed_since_tangent() const
+  {
+    return changed_since_tangent;
   }
 
   template <int dim>

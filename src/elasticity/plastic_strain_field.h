@@ -74,6 +74,12 @@ namespace DiskImpact
     /// The quadrature points that yielded in the last evaluation. Collective.
     unsigned int
     n_yielding_points() const;
+    /// The points whose yielding in the last evaluation differs from the
+    /// last evaluation with a tangent (the plastic zone's change since
+    /// Newton's matrix was assembled; points of cells the evaluation
+    /// skipped are not counted). Collective.
+    unsigned int
+    n_changed_since_tangent() const;
     /// Each active cell's largest accepted alpha (0 on cells not locally
     /// owned), for graphical output.
     dealii::Vector<float>
@@ -91,6 +97,8 @@ namespace DiskImpact
       dealii::SymmetricTensor<2, 3> stress, trial_stress;
       /// dV of the point (JxW times the section's measure).
       double volume = 0.;
+      /// Whether it yielded in the last evaluation with a tangent.
+      bool in_tangent = false;
     };
 
     /// The largest @p value of each locally owned cell's points.
@@ -104,7 +112,7 @@ namespace DiskImpact
     /// elsewhere), and whether the cell is near yield.
     std::vector<std::vector<Point>> points;
     std::vector<bool>               near_yield;
-    unsigned int                    yielding = 0;
+    unsigned int                    yielding = 0, changed_since_tangent = 0;
     /// int eps_p : C : eps_p dV / 2 of the accepted states per material.
     std::vector<double> strain_energy_terms;
   };

@@ -728,6 +728,7 @@ namespace DiskImpact
         summary.plastic_strain_max =
           plasticity->largest_equivalent_plastic_strain();
         summary.plastic_iterations = stepper->n_plastic_iterations();
+        summary.tangent_factorizations = stepper->n_tangent_factorizations();
       }
     summary.newton_iterations     = stepper->n_newton_iterations();
     summary.factorizations        = stepper->n_factorizations();

@@ -58,7 +58,8 @@ namespace DiskImpact
                     "von_mises_depth",
                     "plastic_work",
                     "plastic_strain_max",
-                    "plastic_iterations"});
+                    "plastic_iterations",
+                    "tangent_factorizations"});
     table.start_row();
     for (const double value : {s.velocity,
                                s.epsilon,
@@ -109,6 +110,7 @@ namespace DiskImpact
                                s.plastic_strain_max})
       table.add(value);
     table.add(s.plastic_iterations);
+    table.add(s.tangent_factorizations);
     return table;
   }
 } // namespace DiskImpact

@@ -74,6 +74,8 @@ namespace DiskImpact
     double       plastic_work          = std::nan("");
     double       plastic_strain_max    = std::nan("");
     unsigned int plastic_iterations    = 0;
+    /// Factorizations of the plastic tangent ('Plastic solver' = Newton).
+    unsigned int tangent_factorizations = 0;
     double       energy_error      = 0.; ///< max |E(t) - E(0)| / E(0)
     double       impulse_error     = 0.; ///< |m dv - sum F dt| / (m v_i)
     unsigned int steps             = 0;

@@ -101,7 +101,8 @@ namespace DiskImpact
         out << "  plastic work = " << s.plastic_work
             << " of E(0), largest equivalent plastic strain = "
             << s.plastic_strain_max << ", plastic iterations "
-            << s.plastic_iterations << "\n";
+            << s.plastic_iterations << " (" << s.tangent_factorizations
+            << " with a new tangent)\n";
       out << "  energy left in vibration: " << s.vibration_fraction
           << " of E(0)";
       if (parameters.partner.is_body())
