@@ -1,6 +1,6 @@
 #include "elasticity/plastic_strain_field.h"
 
-#include "base/input_error.h"
+#include "material/plane_stress_return_mapping.h"
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -78,15 +78,18 @@ namespace DiskImpact
             return_mappings.emplace_back();
             continue;
           }
-        require(dim == 3 || material.plane_model() != PlaneModel::plane_stress,
-                "Material: plasticity ('Yield stress' > 0) needs a plane-"
-                "strain disk, a sphere or a 3D body; plane stress is not "
-                "supported");
-        return_mappings.push_back(
-          std::make_unique<J2ReturnMapping>(material.lame_lambda_3d(),
-                                            material.shear_modulus_3d(),
-                                            material.yield_stress(),
-                                            material.hardening_modulus()));
+        if (dim == 2 && material.plane_model() == PlaneModel::plane_stress)
+          return_mappings.push_back(std::make_unique<PlaneStressReturnMapping>(
+            material.lame_lambda_3d(),
+            material.shear_modulus_3d(),
+            material.yield_stress(),
+            material.hardening_modulus()));
+        else
+          return_mappings.push_back(
+            std::make_unique<J2ReturnMapping>(material.lame_lambda_3d(),
+                                              material.shear_modulus_3d(),
+                                              material.yield_stress(),
+                                              material.hardening_modulus()));
       }
     strain_energy_terms.assign(return_mappings.size(), 0.);
     const unsigned int n_points =

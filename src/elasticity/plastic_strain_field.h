@@ -31,7 +31,8 @@ namespace DiskImpact
    *
    * The strains are three-dimensional: plane strain adds eps_zz = 0, the
    * axisymmetric meridian its hoop strain (Section). Cells whose material is
-   * elastic are skipped. Plane stress is not supported.
+   * elastic are skipped. A plane-stress disk takes PlaneStressReturnMapping
+   * (sigma_zz = 0, its eps_zz found per point).
    */
   template <int dim>
   class PlasticStrainField

@@ -13,6 +13,7 @@ namespace DiskImpact
    *
    * Yield function f = |dev sigma| - sqrt(2/3) (Y + H alpha), alpha the
    * equivalent plastic strain; H = 0 is perfect plasticity.
+   * PlaneStressReturnMapping adds the condition sigma_zz = 0.
    */
   class J2ReturnMapping
   {
@@ -43,20 +44,21 @@ namespace DiskImpact
                     double mu,
                     double yield_stress,
                     double hardening_modulus);
+    virtual ~J2ReturnMapping() = default;
 
     /// The stress at the total strain @p strain from the state @p old;
     /// the tangent only if @p with_tangent (else left zero).
-    Update
+    virtual Update
     update(const dealii::SymmetricTensor<2, 3> &strain,
            const State                         &old,
            bool                                 with_tangent = true) const;
 
     /// C : eps, the elastic stress of a strain.
-    dealii::SymmetricTensor<2, 3>
+    virtual dealii::SymmetricTensor<2, 3>
     elastic_stress(const dealii::SymmetricTensor<2, 3> &strain) const;
 
     /// C, the tangent where the point responds elastically.
-    const dealii::SymmetricTensor<4, 3> &
+    virtual const dealii::SymmetricTensor<4, 3> &
     elastic_tangent() const;
 
     double

@@ -63,8 +63,9 @@ namespace DiskImpact
                         Patterns::Double(),
                         "Von Mises yield stress Y [force/area] (uniaxial): "
                         "0 is elastic; above 0 the body is elastic-plastic "
-                        "(J2 flow, radial return). Plane strain, spheres and "
-                        "3D bodies; not plane stress. Must not be negative.");
+                        "(J2 flow, radial return; in plane stress with "
+                        "sigma_zz = 0 at every point). Must not be "
+                        "negative.");
       prm.declare_entry("Hardening modulus",
                         "0",
                         Patterns::Double(),

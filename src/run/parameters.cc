@@ -234,11 +234,6 @@ namespace DiskImpact
                 "computed by the tasks impact, sweep, impact convergence and "
                 "quasistatic contact so far, not by '" +
                   run.task + "'");
-        require(geometry.is_sphere() || geometry.dimension() == 3 ||
-                  body.plane_model() == PlaneModel::plane_strain,
-                "Material: 'Yield stress' > 0 needs 'Plane model = plane "
-                "strain' for a disk in two dimensions (the von Mises return "
-                "mapping of plane stress is not implemented)");
         require(!contact.exact_constraint(),
                 "Contact: an elastic-plastic body ('Yield stress' > 0) needs "
                 "'Law = penalty' or 'exponential', not 'constraint'");

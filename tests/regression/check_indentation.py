@@ -3,15 +3,16 @@
 indentation.csv and indentation_summary.csv.
 
 usage: check_indentation.py OUTPUT_DIR [--energy TOL]
-           [--yield {sphere|plane-strain} Y_OVER_E {below|above} MARGIN]
+           [--yield {sphere|plane-strain|plane-stress} Y_OVER_E {below|above}
+            MARGIN]
 
 --energy: the path's energy identity, |work of the body force - work of the
   support - elastic energy - plastic work| <= TOL times the largest work,
   at every step.
 --yield: the load of first yield derived here independently of diskimpact
   (hertz_yield.py: p0/Y from Hertz's stress field; nu = 0.3, E = 1;
-  sphere: load P/(pi E* R^2) = pi^2 (p0/E*)^3 / 6; disk in plane strain:
-  P/(pi E2 R) = (p0/E2)^2). 'below': the largest load must lie at least
+  sphere: load P/(pi E* R^2) = pi^2 (p0/E*)^3 / 6; disk: P/(pi E2 R) =
+  (p0/E2)^2, E2 = E/(1 - nu^2) in plane strain, E in plane stress). 'below': the largest load must lie at least
   MARGIN below it, the body stay elastic (no plastic work), the residual
   indentation vanish (below 1e-9 of the largest approach) and the loading
   point's approach less the penalty's penetration agree with the elastic
@@ -59,7 +60,9 @@ if args.yield_check:
     body, y_over_e, side, margin = args.yield_check
     nu = 0.3
     ratio, _ = first_yield_pressure_ratio(body, nu)
-    p0 = ratio * float(y_over_e) * (1 - nu * nu)  # over E* or E2
+    # Over E* or E2.
+    p0 = ratio * float(y_over_e) * (1 if body == "plane-stress" else
+                                    1 - nu * nu)
     if body == "sphere":
         load_yield = math.pi ** 2 * p0 ** 3 / 6
     else:
@@ -85,7 +88,7 @@ if args.yield_check:
             delta_hertz = (9 * math.pi ** 2 * x ** 2 / 16) ** (1 / 3)
             law = delta_hertz + math.pi * x * (-0.5321 - 0.0330 * math.log(a))
         else:
-            nu2 = nu / (1 - nu)
+            nu2 = nu if body == "plane-stress" else nu / (1 - nu)
             law = x * (math.log(4 / x) - 2 * math.log(2) - (1 + nu2) / 4)
         report(abs(delta / law - 1) <= 5e-5,
                f"loading point's approach {delta:.8e} R against the elastic "

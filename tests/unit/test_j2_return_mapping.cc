@@ -1,4 +1,5 @@
 #include "material/j2_return_mapping.h"
+#include "stress_tangent_check.h"
 
 #include <catch2/catch.hpp>
 
@@ -6,13 +7,10 @@
 
 using namespace DiskImpact;
 using dealii::SymmetricTensor;
+using namespace point_constants;
 
 namespace
 {
-  // Steel-like constants in units of E: nu = 0.3, Y = 5e-3 E.
-  constexpr double E = 1., nu = 0.3, Y = 5e-3;
-  const double     mu     = E / (2. * (1. + nu));
-  const double     lambda = E * nu / ((1. + nu) * (1. - 2. * nu));
 
   /// The strain of simple shear with engineering shear strain gamma.
   SymmetricTensor<2, 3>
@@ -92,29 +90,10 @@ TEST_CASE("J2 return mapping: the consistent tangent is d sigma / d eps",
   for (const double H : {0., 0.2})
     {
       const J2ReturnMapping  law(lambda, mu, Y, H);
-      J2ReturnMapping::State old;
-      old.plastic_strain[0][0] = 1e-3, old.plastic_strain[1][1] = -4e-4;
-      old.plastic_strain[2][2] = -6e-4, old.plastic_strain[0][1] = 2e-4;
-      old.equivalent_plastic_strain = 1.2e-3;
+      const J2ReturnMapping::State old = plastic_history();
       SymmetricTensor<2, 3> strain;
       strain[0][0] = 0.012, strain[1][1] = -0.003, strain[2][2] = 0.002;
       strain[0][1] = 0.004, strain[1][2] = -0.001;
-      const auto base = law.update(strain, old);
-      REQUIRE(base.yielded);
-      // Central differences in each of the six strain components (the
-      // off-diagonal ones perturbed symmetrically).
-      const double h = 1e-7;
-      for (unsigned int k = 0; k < 3; ++k)
-        for (unsigned int l = k; l < 3; ++l)
-          {
-            SymmetricTensor<2, 3> step;
-            step[k][l]                        = h;
-            const auto                  plus  = law.update(strain + step, old);
-            const auto                  minus = law.update(strain - step, old);
-            const SymmetricTensor<2, 3> numeric =
-              (plus.stress - minus.stress) / (2. * h);
-            const SymmetricTensor<2, 3> analytic = base.tangent * step / h;
-            CHECK((numeric - analytic).norm() <= 1e-6 * analytic.norm());
-          }
+      check_tangent_by_differences(law, strain, old, 3);
     }
 }
