@@ -27,10 +27,10 @@ import argparse
 import csv
 import math
 import os
-import subprocess
 import sys
 import tempfile
-import time
+
+from diskimpact_run import run_diskimpact
 
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "tests",
                                 "regression"))
@@ -51,8 +51,6 @@ parser.add_argument("--elements", type=int, default=10,
                     help="elements across the contact on the first level")
 args = parser.parse_args()
 
-root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
-binary = os.path.join(root, "build", "diskimpact")
 nu = 0.3
 ratio, _ = first_yield_pressure_ratio(args.body, nu)
 p0 = ratio * args.yield_strain * (1 - nu * nu)  # over E* or E2
@@ -99,12 +97,7 @@ subsection Quasistatic contact
   set Newton tolerance = 1e-9
 end
 """)
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
-               OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-    start = time.time()
-    subprocess.run(["mpirun", "-np", str(args.ranks), binary, prm],
-                   check=True, stdout=subprocess.DEVNULL, env=env)
-    seconds = time.time() - start
+    seconds = run_diskimpact(prm, args.ranks)
     summary = next(csv.DictReader(
         open(os.path.join(directory, "indentation_summary.csv"))))
     rows = list(csv.DictReader(

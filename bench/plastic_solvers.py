@@ -20,9 +20,9 @@ usage: bench/plastic_solvers.py [--ranks 2] [--speeds 10,100]
 import argparse
 import csv
 import os
-import subprocess
 import tempfile
-import time
+
+from diskimpact_run import run_diskimpact
 
 parser = argparse.ArgumentParser()
 parser.add_argument("--ranks", type=int, default=2)
@@ -32,8 +32,6 @@ parser.add_argument("--elements", type=int, default=16,
                     help="elements across Hertz's contact")
 args = parser.parse_args()
 
-root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
-binary = os.path.join(root, "build", "diskimpact")
 # 10 v_y of params/impact_convergence_plastic_sphere.prm.
 speed_of_first_yield = 9.22133e-7
 
@@ -65,12 +63,7 @@ subsection Time stepping
   set Plastic solver = {solver}
 end
 """)
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
-               OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-    start = time.time()
-    subprocess.run(["mpirun", "-np", str(args.ranks), binary, prm],
-                   check=True, stdout=subprocess.DEVNULL, env=env)
-    seconds = time.time() - start
+    seconds = run_diskimpact(prm, args.ranks)
     row = next(csv.DictReader(open(os.path.join(directory, "summary.csv"))))
     row["seconds"] = seconds
     return row

@@ -283,21 +283,28 @@ namespace DiskImpact
     // elastic fixed point slow to contract: a deep history.)
     const PETScWrappers::MPI::Vector base = b;
     const double                     cK   = integrator.stiffness_coefficient();
-    PETScWrappers::MPI::Vector       x    = plastic_force, product_T;
+    PETScWrappers::MPI::Vector       product_T;
+    // The load of the linearization at @p at with f_p(at) = @p force:
+    // force + T at on the tangent, force itself on the elastic matrix.
+    const auto linearized_load = [&](const PETScWrappers::MPI::Vector &force,
+                                     const PETScWrappers::MPI::Vector &at) {
+      PETScWrappers::MPI::Vector load = force;
+      if (on_tangent())
+        {
+          plastic_tangent_product(at, product_T);
+          load += product_T;
+        }
+      return load;
+    };
+    // Newton from the step's start, or f_p extrapolated linearly from the
+    // last two steps.
+    PETScWrappers::MPI::Vector x = linearized_load(plastic_force, u);
+    if (!on_tangent() && previous_plastic_force.size() == x.size())
+      x.sadd(2., -1., previous_plastic_force);
     // The size the tolerance is relative to: f_p's guess (on the tangent,
     // f_p(u_k) of the linearization).
     double guess_norm = plastic_force.l2_norm();
-    if (on_tangent())
-      {
-        // Newton from the step's start.
-        plastic_tangent_product(u, product_T);
-        x += product_T;
-      }
-    else if (previous_plastic_force.size() == x.size())
-      // f_p extrapolated linearly from the last two steps.
-      x.sadd(2., -1., previous_plastic_force);
-    auto acceleration =
-      std::make_unique<AndersonAcceleration<PETScWrappers::MPI::Vector>>(15);
+    AndersonAcceleration<PETScWrappers::MPI::Vector> acceleration(15);
     for (unsigned int k = 1;; ++k)
       {
         b = base;
@@ -352,17 +359,11 @@ namespace DiskImpact
               use_solver(*solver);
             else
               refresh_tangent(u_new);
-            x = trial_plastic_force;
-            if (on_tangent())
-              {
-                plastic_tangent_product(u_new, product_T);
-                x += product_T;
-              }
-            acceleration = std::make_unique<
-              AndersonAcceleration<PETScWrappers::MPI::Vector>>(15);
+            x            = linearized_load(trial_plastic_force, u_new);
+            acceleration = AndersonAcceleration<PETScWrappers::MPI::Vector>(15);
             continue;
           }
-        x = acceleration->next(x, change);
+        x = acceleration.next(x, change);
       }
   }
 

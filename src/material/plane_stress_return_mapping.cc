@@ -11,31 +11,18 @@ namespace DiskImpact
 
   namespace
   {
-    /// The in-plane block of @p c (indices 0, 1), zero elsewhere.
+    /// @p c with eps_zz condensed out: C_ijkl - C_ijzz C_zzkl / C_zzzz in
+    /// the plane (sigma_zz = 0 at any in-plane strain), zero elsewhere.
     SymmetricTensor<4, 3>
-    in_plane(const SymmetricTensor<4, 3> &c)
+    condensed(const SymmetricTensor<4, 3> &c)
     {
       SymmetricTensor<4, 3> block;
       for (unsigned int i = 0; i < 2; ++i)
         for (unsigned int j = i; j < 2; ++j)
           for (unsigned int k = 0; k < 2; ++k)
             for (unsigned int l = k; l < 2; ++l)
-              block[i][j][k][l] = c[i][j][k][l];
-      return block;
-    }
-
-    /// @p c with eps_zz condensed out: C_ijkl - C_ijzz C_zzkl / C_zzzz in
-    /// the plane (sigma_zz = 0 at any in-plane strain).
-    SymmetricTensor<4, 3>
-    condensed(const SymmetricTensor<4, 3> &c)
-    {
-      SymmetricTensor<4, 3> block = in_plane(c);
-      for (unsigned int i = 0; i < 2; ++i)
-        for (unsigned int j = i; j < 2; ++j)
-          for (unsigned int k = 0; k < 2; ++k)
-            for (unsigned int l = k; l < 2; ++l)
-              block[i][j][k][l] -=
-                c[i][j][2][2] * c[2][2][k][l] / c[2][2][2][2];
+              block[i][j][k][l] =
+                c[i][j][k][l] - c[i][j][2][2] * c[2][2][k][l] / c[2][2][2][2];
       return block;
     }
   } // namespace

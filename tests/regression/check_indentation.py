@@ -12,8 +12,8 @@ usage: check_indentation.py OUTPUT_DIR [--energy TOL]
 --yield: the load of first yield derived here independently of diskimpact
   (hertz_yield.py: p0/Y from Hertz's stress field; nu = 0.3, E = 1;
   sphere: load P/(pi E* R^2) = pi^2 (p0/E*)^3 / 6; disk: P/(pi E2 R) =
-  (p0/E2)^2, E2 = E/(1 - nu^2) in plane strain, E in plane stress). 'below': the largest load must lie at least
-  MARGIN below it, the body stay elastic (no plastic work), the residual
+  (p0/E2)^2, E2 = E/(1 - nu^2) in plane strain, E in plane stress).
+  'below': the largest load must lie at least MARGIN below it, the body stay elastic (no plastic work), the residual
   indentation vanish (below 1e-9 of the largest approach) and the loading
   point's approach less the penalty's penetration agree with the elastic
   contact law within 5e-5: the
