@@ -46,7 +46,7 @@ namespace DiskImpact
   RigidWall<dim>::embedded() const
   {
     RigidWall<spacedim> wall;
-    for (unsigned int d = 0; d < std::min(dim, spacedim); ++d)
+    for (int d = 0; d < std::min(dim, spacedim); ++d)
       {
         wall.point[d]  = point[d];
         wall.normal[d] = normal[d];

@@ -52,7 +52,9 @@ KINDS = ("hang", "crash", "abort output", "exit 0", "no message",
 MPIRUN_NOTICES = ("terminated normally, but", "exited with non-zero status")
 MPI_DEFAULTS = {"OMPI_ALLOW_RUN_AS_ROOT": "1",
                 "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM": "1",
-                "OMPI_MCA_rmaps_base_oversubscribe": "1"}
+                "OMPI_MCA_rmaps_base_oversubscribe": "1",
+                # no Open MPI daemon for a run without mpirun
+                "OMPI_MCA_ess_singleton_isolated": "1"}
 
 
 def parse_arguments():
