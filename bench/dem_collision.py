@@ -118,17 +118,18 @@ def linear_time(snippet, radius, density):
     return math.pi / math.sqrt(omega2)
 
 
-def time_step(code, snippet, radius, density, speed, dimension=3):
-    """dt: the contact time of the snippet's law / STEPS_PER_CONTACT."""
+def time_step(code, snippet, radius, density, speed, dimension=3,
+              steps_per_contact=STEPS_PER_CONTACT):
+    """dt: the contact time of the snippet's law / steps_per_contact."""
     if dimension == 2:
-        return linear_time(snippet, radius, density) / STEPS_PER_CONTACT
+        return linear_time(snippet, radius, density) / steps_per_contact
     if code == "yade":
         tc = re.search(r"\btc\s*=\s*([^,)\s]+)", snippet)
         if tc is None:
             raise DEMError("cannot read tc from the yade snippet")
-        return float(tc.group(1)) / STEPS_PER_CONTACT
+        return float(tc.group(1)) / steps_per_contact
     E, nu = material(code, snippet)
-    return hertz_time(radius, density, E, nu, speed) / STEPS_PER_CONTACT
+    return hertz_time(radius, density, E, nu, speed) / steps_per_contact
 
 
 def yade_script(snippet, radius, speed, tangential, dt, steps, gap):
@@ -264,10 +265,10 @@ def analyse(path, dt, radius=1.0):
 
 
 def collide(code, snippet_text, radius, density, speed, work_dir=None,
-            dimension=3):
+            dimension=3, steps_per_contact=STEPS_PER_CONTACT):
     """Run one head-on collision; returns (epsilon, contact_time)."""
     return run(code, snippet_text, radius, density, speed, 0.0, work_dir,
-               dimension)[:2]
+               dimension, steps_per_contact)[:2]
 
 
 def oblique(code, snippet_text, radius, density, speed, angle,
@@ -286,7 +287,7 @@ def oblique(code, snippet_text, radius, density, speed, angle,
 
 
 def run(code, snippet_text, radius, density, speed, tangential,
-        work_dir=None, dimension=3):
+        work_dir=None, dimension=3, steps_per_contact=STEPS_PER_CONTACT):
     """Run one collision, normal speed @p speed and tangential speed
     @p tangential of each sphere (disk in 2D); returns analyse()'s triple."""
     if code not in BINARY:
@@ -300,11 +301,12 @@ def run(code, snippet_text, radius, density, speed, tangential,
     if work_dir is None:  # a temporary directory, kept if the run fails
         tmp = tempfile.mkdtemp(prefix="dem_collision_")
         result = run(code, snippet_text, radius, density, speed, tangential,
-                     tmp, dimension)
+                     tmp, dimension, steps_per_contact)
         shutil.rmtree(tmp)
         return result
-    dt = time_step(code, snippet_text, radius, density, speed, dimension)
-    steps = PRE_STEPS + RUN_CONTACTS * STEPS_PER_CONTACT
+    dt = time_step(code, snippet_text, radius, density, speed, dimension,
+                   steps_per_contact)
+    steps = PRE_STEPS + RUN_CONTACTS * steps_per_contact
     gap = 2.0 * speed * PRE_STEPS * dt
     run_dir = os.path.join(work_dir, "%s_v%r_t%r" % (code, speed, tangential))
     os.makedirs(run_dir, exist_ok=True)

@@ -4,12 +4,18 @@
 
 usage: plot_restitution.py restitution.csv [more.csv ...] [-o epsilon.png]
 
+Beside a table of task 'restitution law' for a plastic sphere, its
+restitution_law.json holds Thornton's model fitted to it
+(docs/theory/thornton-model.md); the model's epsilon(v) is drawn too.
+
 Speeds are drawn as v/c, or in m/s for the tables of SI runs (Units = SI):
 their restitution.h5 beside the CSV holds the speed unit c in m/s (root
 attribute speed_unit_m_per_s). Tables of both kinds cannot share a plot.
 """
 import argparse
 import csv
+import json
+import math
 import os
 import sys
 
@@ -28,6 +34,26 @@ def speed_unit(csv_path):
     with h5py.File(h5_path, "r") as f:
         value = f.attrs.get("speed_unit_m_per_s")
     return float(value) if value is not None else None
+
+
+def thornton_epsilon(u):
+    """epsilon of LIGGGHTS' thornton_ning at v/v_y = u
+    (docs/theory/thornton-model.md)."""
+    if u <= 1.0:
+        return 1.0
+    x_m = 1.0 + (math.sqrt(1.2 * u * u - 0.2) - 1.0) / 1.5
+    f_m = 1.0 + 1.5 * (x_m - 1.0)
+    x_p = max(x_m ** 1.5 - f_m, 0.0) ** (2.0 / 3.0)
+    returned = (f_m - x_m ** 1.5) * (x_m - x_p) + 0.4 * (x_m ** 2.5 - x_p ** 2.5)
+    return math.sqrt(returned / (0.4 * u * u))
+
+
+def thornton_fit(csv_path):
+    """restitution_law.json's Thornton fit beside the table, or None."""
+    path = os.path.join(os.path.dirname(csv_path) or ".", "restitution_law.json")
+    if not os.path.exists(path):
+        return None
+    return json.load(open(path)).get("thornton_fit")
 
 
 p = argparse.ArgumentParser()
@@ -51,6 +77,15 @@ for path, c in zip(a.files, units):
                else 0.0 for r in sel]
         ax.errorbar(v, eps, yerr=err, fmt="o-", capsize=3, ms=4,
                     label=f"FE, nu2 = {float(nu2):.2f}")
+    fit = thornton_fit(path)
+    if fit and v:
+        scale = c if si else 1.0
+        lo, hi = math.log(min(v)), math.log(max(v))
+        curve = [math.exp(lo + (hi - lo) * k / 200) for k in range(201)]
+        ax.plot(curve, [thornton_epsilon(x / (fit["yield_speed"] * scale))
+                        for x in curve], "--",
+                label="Thornton (LIGGGHTS thornton_ning), p_y = "
+                      f"{fit['limiting_pressure_over_yield_stress']:.3g} Y")
 ax.set_xscale("log")
 ax.set_xlabel("v_i [m/s]" if si else "v_i / c")
 ax.set_ylabel("epsilon")

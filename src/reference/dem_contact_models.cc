@@ -4,6 +4,7 @@
 
 #include <boost/math/tools/roots.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <utility>
@@ -120,6 +121,24 @@ namespace DiskImpact
       return {effective_mass * (M_PI * M_PI + log_e * log_e) /
                 (contact_time * contact_time),
               -2. * effective_mass * log_e / contact_time};
+    }
+
+    double
+    thornton_ning_epsilon(const double u)
+    {
+      if (!(u > 0.))
+        throw std::domain_error("thornton_ning_epsilon: needs v / v_y > 0");
+      if (u <= 1.)
+        return 1.;
+      const double loading_work = 0.4 * u * u;
+      const double x_m     = 1. + (std::sqrt(1.2 * u * u - 0.2) - 1.) / 1.5;
+      const double f_m     = 1. + 1.5 * (x_m - 1.);
+      const double hertz_m = x_m * std::sqrt(x_m); // x_m^{3/2}
+      const double x_p     = std::pow(std::max(hertz_m - f_m, 0.), 2. / 3.);
+      const double returned =
+        (f_m - hertz_m) * (x_m - x_p) +
+        0.4 * (x_m * x_m * std::sqrt(x_m) - x_p * x_p * std::sqrt(x_p));
+      return std::sqrt(returned / loading_work);
     }
   } // namespace Reference
 } // namespace DiskImpact

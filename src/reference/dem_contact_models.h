@@ -88,5 +88,36 @@ namespace DiskImpact
     lammps_viscoelastic_damping(double dissipative_constant,
                                 double effective_modulus,
                                 double effective_mass);
+
+    /**
+     * LIGGGHTS' elastic-plastic contact 'pair_style gran model
+     * thornton_ning' without adhesion ('surfaceEnergy' 0), for a sphere of
+     * radius R on a rigid wall or two identical spheres (the same problem),
+     * with the contact radius of yield a_y = r R ('coefficientYieldRatio'
+     * r; Thornton's limiting pressure p_y = 2 E* a_y / (pi R)):
+     *
+     * - loading: Hertz's F = (4/3) E* R^{1/2} d^{3/2} up to
+     *   d_y = a_y^2 / R, then Thornton's F = F_y + pi p_y R (d - d_y);
+     * - unloading (and reloading): Hertz's stiffness of the current
+     *   overlap, dF = 2 E* (R d)^{1/2} dd, with the original radius
+     *   (LIGGGHTS integrates it in increments; Thornton 1997's unloading
+     *   with an enlarged radius differs), until F = 0 at d_p.
+     *
+     * In units of d_y and F_y (x = d / d_y, f = F / F_y): loading
+     * f = x^{3/2}, then f = 1 + (3/2)(x - 1); unloading
+     * f = f_m - (x_m^{3/2} - x^{3/2}). The speed v_y at which the overlap
+     * just reaches d_y stores W_y = 2/5, so at u = v / v_y the work of
+     * loading 2/5 + y + (3/4) y^2 = (2/5) u^2 (y = x_m - 1) gives
+     *
+     *   x_m = 1 + (sqrt(6 u^2/5 - 1/5) - 1) / (3/2),
+     *   x_p^{3/2} = x_m^{3/2} - f_m,
+     *   epsilon^2 = [f_m (x_m - x_p) - x_m^{3/2} (x_m - x_p)
+     *                + (2/5)(x_m^{5/2} - x_p^{5/2})] / ((2/5) u^2);
+     *
+     * epsilon = 1 for u <= 1 and epsilon ~ u^{-1/4} for u >> 1. v_y is
+     * sphere_yield_velocity() of the pressure p_y.
+     */
+    double
+    thornton_ning_epsilon(double speed_over_yield_speed);
   } // namespace Reference
 } // namespace DiskImpact

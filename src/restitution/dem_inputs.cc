@@ -61,6 +61,39 @@ namespace DiskImpact
              << " (diskimpact's 'Friction coefficient').\n";
       return head.str();
     }
+
+    /// LIGGGHTS' elastic-plastic contact of a plastic sphere (DemInputs).
+    std::string
+    liggghts_thornton_file(const DemInputs &d, const std::string &header)
+    {
+      return header +
+             "# LIGGGHTS, model thornton_ning without adhesion (surfaceEnergy "
+             "0): Hertz up to the\n# contact radius a_y = "
+             "coefficientYieldRatio x R, then Thornton's plastic loading "
+             "at the\n# limiting pressure p_y = " +
+             ten_digits(d.limiting_pressure) +
+             " Pa fitted to diskimpact's epsilon(v) (the model's v_y = " +
+             ten_digits(d.yield_speed) +
+             " m/s);\n# epsilon falls with the speed "
+             "(restitution_law.csv, epsilon_thornton_fit). "
+             "coefficientRestitution\n# only damps the tangential spring.\n"
+             "hard_particles yes\n"
+             "fix m1 all property/global youngsModulus peratomtype " +
+             ten_digits(d.young) +
+             "\nfix m2 all property/global poissonsRatio peratomtype " +
+             ten_digits(d.poisson) +
+             "\nfix m3 all property/global coefficientRestitution "
+             "peratomtypepair 1 " +
+             ten_digits(d.liggghts_restitution) +
+             "\nfix m4 all property/global coefficientFriction peratomtypepair "
+             "1 " +
+             ten_digits(d.friction) +
+             "\nfix m5 all property/global surfaceEnergy peratomtypepair 1 0"
+             "\nfix m6 all property/global coefficientYieldRatio peratomtype " +
+             ten_digits(d.yield_ratio) +
+             "\npair_style gran model thornton_ning tangential history\n"
+             "pair_coeff * *\n";
+    }
   } // namespace
 
   std::map<std::string, std::string>
@@ -155,6 +188,8 @@ namespace DiskImpact
       "\nset poisson ratio particles           = " + ten_digits(d.poisson) +
       "\nset restitution coefficient particles = " + ten_digits(d.epsilon) +
       "\nset friction coefficient particles    = " + mu + "\n";
+    if (d.yield_ratio > 0.)
+      files["liggghts_thornton.txt"] = liggghts_thornton_file(d, head.str());
     return files;
   }
 

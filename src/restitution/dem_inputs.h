@@ -16,6 +16,10 @@ namespace DiskImpact
     /// coefficient'); 0: the codes' frictionless contact.
     double                            friction = 0.;
     Reference::LinearDashpotCollision yade; ///< ViscElMat's (en, tc)
+    /// A plastic sphere's Thornton fit (0: elastic, no such file): the
+    /// limiting pressure p_y [Pa], 'coefficientYieldRatio' a_y / R =
+    /// pi p_y / (2 E*) and the model's v_y [m/s].
+    double limiting_pressure = 0., yield_ratio = 0., yield_speed = 0.;
   };
 
   /// What a 2D DEM code needs for a disk, per unit thickness, in SI.
@@ -43,7 +47,10 @@ namespace DiskImpact
    * body and epsilon at the reference speed. With friction, the tangential
    * part: mu and each code's no-slip stiffness (Mindlin's 8 G* a where the
    * code has it, else its linear counterpart), with the tangential damping
-   * the code ties to the normal one.
+   * the code ties to the normal one. For a plastic sphere also
+   * liggghts_thornton.txt: LIGGGHTS' 'model thornton_ning' without
+   * adhesion with the fitted yield ratio, velocity-dependent like the FE's
+   * epsilon (Reference::thornton_ning_epsilon()).
    */
   std::map<std::string, std::string>
   dem_files(const DemInputs &d);

@@ -1,8 +1,13 @@
 #include "restitution/restitution_fit.h"
 
+#include "reference/dem_contact_models.h"
+#include "reference/hertz_first_yield.h"
+
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/householder.h>
 #include <deal.II/lac/vector.h>
+
+#include <boost/math/tools/minima.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -56,6 +61,46 @@ namespace DiskImpact
       }
     Householder<double>(design).least_squares(a, rhs);
     return {v_ref, std::vector<double>(a.begin(), a.end())};
+  }
+
+  ThorntonFit
+  fit_thornton(const RestitutionTable &table, const double yield_strain)
+  {
+    ThorntonFit fit;
+    const auto  model = [&](const double log_ratio) {
+      fit.pressure_ratio = std::exp(log_ratio);
+      fit.yield_speed =
+        Reference::sphere_yield_velocity(fit.pressure_ratio, yield_strain);
+      fit.epsilon.clear();
+      double sum = 0.;
+      for (unsigned int i = 0; i < table.v.size(); ++i)
+        {
+          fit.epsilon.push_back(
+            Reference::thornton_ning_epsilon(table.v[i] / fit.yield_speed));
+          sum += std::pow(fit.epsilon.back() - table.epsilon[i], 2);
+        }
+      return sum;
+    };
+    // The misfit is flat where every speed is below the model's v_y, so a
+    // scan brackets the minimum before Brent refines it.
+    const double       low = std::log(0.3), high = std::log(30.);
+    const unsigned int n_scan = 60;
+    const double       step   = (high - low) / n_scan;
+    double             best = low, best_value = model(low);
+    for (unsigned int k = 1; k <= n_scan; ++k)
+      if (const double value = model(low + k * step); value < best_value)
+        {
+          best_value = value;
+          best       = low + k * step;
+        }
+    boost::uintmax_t iterations = 100;
+    const auto       minimum    = boost::math::tools::brent_find_minima(
+      model, best - step, best + step, 40, iterations);
+    model(minimum.first);
+    for (unsigned int i = 0; i < table.v.size(); ++i)
+      fit.max_residual =
+        std::max(fit.max_residual, std::abs(fit.epsilon[i] - table.epsilon[i]));
+    return fit;
   }
 
   double

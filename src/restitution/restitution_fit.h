@@ -32,6 +32,23 @@ namespace DiskImpact
   SmoothFit
   fit_smooth(const RestitutionTable &table, double v_ref, unsigned int terms);
 
+  /// Thornton's elastic-plastic contact in LIGGGHTS' form
+  /// (Reference::thornton_ning_epsilon()) fitted to a sphere's epsilon(v).
+  struct ThorntonFit
+  {
+    double pressure_ratio = 0.;  ///< the limiting pressure p_y / Y
+    double yield_speed    = 0.;  ///< the model's v_y, in the table's units
+    std::vector<double> epsilon; ///< the model's, at each speed
+    double              max_residual = 0.;
+  };
+
+  /// The p_y minimizing sum (eps_model - eps)^2 over the speeds, all alike
+  /// (the model's misfit is far larger than the bars), for the yield strain
+  /// @p yield_strain = Y / E* and speeds in units of c = sqrt(E* / rho):
+  /// a scan over p_y / Y from 0.3 to 30, then Brent's method.
+  ThorntonFit
+  fit_thornton(const RestitutionTable &table, double yield_strain);
+
   /// y(x0) by linear interpolation in log x (clamped to the ends).
   double
   interpolate_in_log(const std::vector<double> &x,

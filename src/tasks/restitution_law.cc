@@ -197,6 +197,14 @@ namespace DiskImpact
       const DissipationFit   theory    = fit_dissipation(parameters, table);
       const UnitSystem      &units     = parameters.units;
       const bool             sphere    = parameters.geometry.is_sphere();
+      const Material        &material  = parameters.material;
+      // Thornton's elastic-plastic contact, for a plastic sphere.
+      const bool        thornton_fitted = sphere && material.is_plastic();
+      const ThorntonFit thornton =
+        thornton_fitted ? fit_thornton(table,
+                                       material.yield_stress() /
+                                         material.in_plane_young_modulus()) :
+                          ThorntonFit();
 
       // The table, dimensionless and in SI.
       std::vector<std::string> names{"velocity",
@@ -207,6 +215,8 @@ namespace DiskImpact
                                      "force_max",
                                      "epsilon_smooth_fit",
                                      "epsilon_theory_fit"};
+      if (thornton_fitted)
+        names.push_back("epsilon_thornton_fit");
       if (units.is_si())
         for (const std::string name :
              {"speed_si", "contact_time_si", "delta_max_si", "force_max_si"})
@@ -226,6 +236,8 @@ namespace DiskImpact
                                      smooth_values[i],
                                      theory.epsilon[i]})
             csv.add(value);
+          if (thornton_fitted)
+            csv.add(thornton.epsilon[i]);
           if (units.is_si())
             for (const double value : {v[i] * units.speed(),
                                        table.contact_time[i] * units.time(),
@@ -270,6 +282,15 @@ namespace DiskImpact
             d.A, d.young / (1. - d.poisson * d.poisson), d.mass);
           d.yade = Reference::yade_viscel_inputs(d.epsilon, d.contact_time);
           d.friction = parameters.contact.friction_coefficient();
+          if (thornton_fitted)
+            {
+              const double e_star = d.young / (1. - d.poisson * d.poisson);
+              d.limiting_pressure =
+                thornton.pressure_ratio * material.yield_stress() *
+                units.young_modulus() / material.young_modulus();
+              d.yield_ratio = M_PI * d.limiting_pressure / (2. * e_star);
+              d.yield_speed = thornton.yield_speed * units.speed();
+            }
           files  = dem_files(d);
           dem_json << "{\"reference_speed_si\": " << ten_digits(d.speed)
                    << ", \"epsilon\": " << ten_digits(d.epsilon)
@@ -282,10 +303,19 @@ namespace DiskImpact
                    << ", \"lammps_viscoelastic_eta_n0\": "
                    << ten_digits(d.lammps_damping)
                    << ", \"friction_coefficient\": " << ten_digits(d.friction)
-                   << ", \"dissipative_constant_si\": " << ten_digits(d.A)
-                   << ", \"files\": [\"dem/liggghts.txt\", \"dem/lammps.txt\", "
-                      "\"dem/yade.py\", \"dem/mercurydpm.txt\", "
-                      "\"dem/lethe.prm\"]}";
+                   << ", \"dissipative_constant_si\": " << ten_digits(d.A);
+          if (thornton_fitted)
+            dem_json << ", \"liggghts_thornton_ning_yield_ratio\": "
+                     << ten_digits(d.yield_ratio)
+                     << ", \"limiting_pressure_si\": "
+                     << ten_digits(d.limiting_pressure)
+                     << ", \"thornton_yield_speed_si\": "
+                     << ten_digits(d.yield_speed);
+          dem_json << ", \"files\": [";
+          for (auto file = files.begin(); file != files.end(); ++file)
+            dem_json << (file == files.begin() ? "" : ", ") << "\"dem/"
+                     << file->first << '"';
+          dem_json << "]}";
         }
       else if (units.is_si())
         {
@@ -344,6 +374,18 @@ namespace DiskImpact
                  ", \"A_si\": " + ten_digits(theory.A * units.input_time()) :
                  std::string())
            << ", \"max_residual\": " << ten_digits(theory_residual) << "},\n"
+           << "  \"thornton_fit\": ";
+      if (thornton_fitted)
+        json << "{\"model\": \"Thornton 1997 as LIGGGHTS' thornton_ning "
+                "without adhesion\", \"limiting_pressure_over_yield_stress\": "
+             << ten_digits(thornton.pressure_ratio)
+             << ", \"yield_speed\": " << ten_digits(thornton.yield_speed)
+             << ", \"epsilon\": " << json_list(thornton.epsilon)
+             << ", \"max_residual\": " << ten_digits(thornton.max_residual)
+             << "}";
+      else
+        json << "null";
+      json << ",\n"
            << "  \"reference_speed\": " << ten_digits(v_ref)
            << ",\n  \"epsilon_at_reference_speed\": " << ten_digits(epsilon_ref)
            << ",\n  \"dem\": " << dem_json.str()
@@ -369,6 +411,12 @@ namespace DiskImpact
                 << ten_digits(theory_residual)
                 << "\n  at v_ref = " << reference_speed
                 << ": epsilon = " << ten_digits(epsilon_ref) << '\n';
+      if (thornton_fitted)
+        std::cout << "  Thornton's model (LIGGGHTS' thornton_ning): p_y = "
+                  << ten_digits(thornton.pressure_ratio)
+                  << " Y, v_y = " << ten_digits(thornton.yield_speed)
+                  << " c, largest residual "
+                  << ten_digits(thornton.max_residual) << '\n';
       if (files.empty())
         std::cout << "  DEM inputs: need 'Units = SI'\n";
       else
@@ -392,6 +440,7 @@ namespace DiskImpact
                             "restitution_law.csv, restitution_law.json, dem/).";
       task.traits.impacts = true;
       task.traits.sweeps  = true;
+      task.traits.plasticity = true;
       task.traits.one_mesh_per_rank = true;
       task.result_files             = sweep_result_files();
       task.result_files.insert(task.result_files.end(),

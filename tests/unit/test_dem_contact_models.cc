@@ -109,3 +109,61 @@ TEST_CASE("The linear spring-dashpot for a given epsilon and contact time",
   CHECK_THROWS(linear_spring_dashpot(0., 1e-6, 1.));
   CHECK_THROWS(linear_spring_dashpot(0.9, -1e-6, 1.));
 }
+
+namespace
+{
+  /// epsilon of LIGGGHTS' thornton_ning at v / v_y = @p u, by velocity
+  /// Verlet with steps of 1e-5 on its force law in units of d_y, F_y and
+  /// the mass (so that v_y^2 = 4/5): Hertz and the plastic line while the
+  /// overlap grows, then Hertz's stiffness of the current overlap until the
+  /// force is 0.
+  double
+  integrated_thornton_ning(const double u)
+  {
+    const double v0 = u * std::sqrt(0.8);
+    double       x = 0., v = v0, x_m = 0., f_m = 0.;
+    bool         unloading = false;
+    const auto   force     = [&](const double y) {
+      if (unloading)
+        return f_m - (x_m * std::sqrt(x_m) - y * std::sqrt(y));
+      return y <= 1. ? y * std::sqrt(y) : 1. + 1.5 * (y - 1.);
+    };
+    const double dt = 1e-5;
+    double       a  = -force(x);
+    while (true)
+      {
+        const double x_new = x + v * dt + 0.5 * a * dt * dt;
+        if (!unloading && x_new < x)
+          {
+            f_m       = force(x);
+            x_m       = x;
+            unloading = true;
+          }
+        if (unloading && force(x_new) <= 0.)
+          return -v / v0;
+        const double a_new = -force(x_new);
+        v += 0.5 * (a + a_new) * dt;
+        x = x_new, a = a_new;
+      }
+  }
+} // namespace
+
+TEST_CASE("LIGGGHTS' thornton_ning: epsilon of its force law", "[dem]")
+{
+  CHECK(thornton_ning_epsilon(0.5) == 1.);
+  CHECK(thornton_ning_epsilon(1. + 1e-9) == Approx(1.).margin(1e-8));
+  double previous = 1.;
+  for (const double u : {1.5, 3., 10., 30., 100.})
+    {
+      const double eps = thornton_ning_epsilon(u);
+      CHECK(eps == Approx(integrated_thornton_ning(u)).margin(2e-6));
+      CHECK(eps < previous);
+      previous = eps;
+    }
+  // Johnson's fully plastic scaling eps ~ u^{-1/4} at u >> 1.
+  const double slope =
+    std::log(thornton_ning_epsilon(1e6) / thornton_ning_epsilon(1e5)) /
+    std::log(10.);
+  CHECK(slope == Approx(-0.25).margin(2e-3));
+  CHECK_THROWS(thornton_ning_epsilon(0.));
+}

@@ -91,3 +91,17 @@ TEST_CASE("A disk's DEM inputs: LAMMPS in 2D with the linear laws", "[dem]")
                  "pair_coeff * * hooke 5e+10 350 tangential linear_nohistory "
                  "0.0 0.0 damping velocity\n"));
 }
+
+TEST_CASE("A plastic sphere's DEM inputs add LIGGGHTS' thornton_ning", "[dem]")
+{
+  CHECK(dem_files(law(0.)).count("liggghts_thornton.txt") == 0);
+  auto d              = law(0.2);
+  d.limiting_pressure = 3e9, d.yield_ratio = 0.0204, d.yield_speed = 0.2;
+  const std::string text = dem_files(d).at("liggghts_thornton.txt");
+  CHECK(contains(text, "coefficientYieldRatio peratomtype 0.0204\n"));
+  CHECK(contains(text, "surfaceEnergy peratomtypepair 1 0\n"));
+  CHECK(contains(text, "coefficientFriction peratomtypepair 1 0.2\n"));
+  CHECK(contains(text,
+                 "pair_style gran model thornton_ning tangential "
+                 "history\npair_coeff * *\n"));
+}
