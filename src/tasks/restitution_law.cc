@@ -413,10 +413,13 @@ namespace DiskImpact
                 << ": epsilon = " << ten_digits(epsilon_ref) << '\n';
       if (thornton_fitted)
         std::cout << "  Thornton's model (LIGGGHTS' thornton_ning): p_y = "
-                  << ten_digits(thornton.pressure_ratio)
-                  << " Y, v_y = " << ten_digits(thornton.yield_speed)
-                  << " c, largest residual "
-                  << ten_digits(thornton.max_residual) << '\n';
+                  << ten_digits(thornton.pressure_ratio) << " Y, v_y = "
+                  << (units.is_si() ?
+                        ten_digits(thornton.yield_speed * units.speed()) +
+                          " m/s" :
+                        ten_digits(thornton.yield_speed) + " c")
+                  << ", largest residual " << ten_digits(thornton.max_residual)
+                  << '\n';
       if (files.empty())
         std::cout << "  DEM inputs: need 'Units = SI'\n";
       else
