@@ -1,4 +1,5 @@
-"""Running the diskimpact of build/ from a bench script."""
+"""Running the diskimpact of build/ from a bench script, and the parameter
+file of the plastic benches' sphere."""
 import os
 import subprocess
 import time
@@ -16,3 +17,29 @@ def run_diskimpact(prm, ranks):
     subprocess.run(["mpirun", "-np", str(ranks), BINARY, prm],
                    check=True, stdout=subprocess.DEVNULL, env=env)
     return time.time() - start
+
+
+def plastic_sphere_prm(directory, refinements, impact, stepping):
+    """Task impact of the elastic-perfectly-plastic sphere of
+    params/sweep_plastic_sphere.prm (nu = 0.3, Y = 0.002 E*, penalty factor
+    100), output in @p directory, with @p refinements global refinements
+    and the lines @p impact and @p stepping of subsections Impact and Time
+    stepping."""
+    return f"""set Task = impact
+set Output directory = {directory}
+subsection Geometry
+  set Body = sphere
+  set Global refinements = {refinements}
+end
+subsection Material
+  set Poisson ratio = 0.3
+  set Yield stress = 0.0021978022
+end
+subsection Contact
+  set Penalty factor = 100
+end
+subsection Impact
+{impact}end
+subsection Time stepping
+{stepping}end
+"""

@@ -22,7 +22,7 @@ import csv
 import os
 import tempfile
 
-from diskimpact_run import run_diskimpact
+from diskimpact_run import plastic_sphere_prm, run_diskimpact
 
 parser = argparse.ArgumentParser()
 parser.add_argument("--ranks", type=int, default=2)
@@ -40,29 +40,13 @@ def run(work, over, solver):
     directory = os.path.join(work, f"v{over}_{solver.replace(' ', '_')}")
     prm = directory + ".prm"
     with open(prm, "w") as f:
-        f.write(f"""set Task = impact
-set Output directory = {directory}
-subsection Geometry
-  set Body = sphere
-  set Global refinements = 1
-end
-subsection Material
-  set Poisson ratio = 0.3
-  set Yield stress = 0.0021978022
-end
-subsection Contact
-  set Penalty factor = 100
-end
-subsection Impact
-  set Velocity = {over * speed_of_first_yield:.6e}
-  set Elements across contact = {args.elements}
-  set Grading = 0.6
-end
-subsection Time stepping
-  set Time step fraction = 0.005
-  set Plastic solver = {solver}
-end
-""")
+        f.write(plastic_sphere_prm(
+            directory, 1,
+            f"  set Velocity = {over * speed_of_first_yield:.6e}\n"
+            f"  set Elements across contact = {args.elements}\n"
+            "  set Grading = 0.6\n",
+            "  set Time step fraction = 0.005\n"
+            f"  set Plastic solver = {solver}\n"))
     seconds = run_diskimpact(prm, args.ranks)
     row = next(csv.DictReader(open(os.path.join(directory, "summary.csv"))))
     row["seconds"] = seconds

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace DiskImpact
 {
@@ -71,6 +72,36 @@ namespace DiskImpact
       body.radius *
       Reference::hertz_sphere_impact(mass, body.modulus, body.radius, v0)
         .max_overlap);
+  }
+
+  double
+  plastic_approach_bound(const Parameters &parameters)
+  {
+    const auto &material = parameters.material;
+    const auto &partner  = parameters.partner;
+    double      yield    = std::numeric_limits<double>::infinity();
+    if (material.is_plastic())
+      yield = material.yield_stress();
+    if (partner.is_body() && partner.material().is_plastic())
+      yield = std::min(yield, partner.material().yield_stress());
+    if (!std::isfinite(yield) || !parameters.geometry.is_sphere())
+      return 0.;
+    const double v0 =
+      parameters.impact.normal_velocity() * material.velocity_unit();
+    double mass   = material.density() * parameters.geometry.volume();
+    double radius = parameters.geometry.radius();
+    if (partner.is_body())
+      {
+        const double m2 =
+          partner.material().density() *
+          parameters.geometry.with_radius(partner.radius()).volume();
+        mass   = mass * m2 / (mass + m2);
+        radius = Reference::equivalent_body(true,
+                                            {radius, 1., 0.},
+                                            {partner.radius(), 1., 0.})
+                   .radius;
+      }
+    return v0 * std::sqrt(mass / (M_PI * radius * yield));
   }
 
   double

@@ -27,6 +27,19 @@ namespace DiskImpact
   double
   hertz_contact_radius(const Parameters &parameters);
 
+  /**
+   * An upper bound of the largest approach of a plastic sphere (or pair of
+   * spheres; 0 if no body yields, and for disks), which grows beyond
+   * Hertz's: a yielding contact's mean pressure stays above the smallest
+   * yield stress Y and its contact radius^2 above R delta, so the work of
+   * the approach, pi R Y delta^2 / 2 at least, is at most the kinetic
+   * energy m v^2 / 2 (the pair's reduced mass and equivalent radius). A
+   * disk's approach is mostly its bulk's compression, which no such bound
+   * ties to the contact's width.
+   */
+  double
+  plastic_approach_bound(const Parameters &parameters);
+
   /// A sphere's derived finite-size constant D = D0 + D1 ln(a/R) at
   /// contact radius @p contact_radius; @p body gives R and nu.
   double

@@ -34,14 +34,16 @@ namespace DiskImpact
        ContactOperator::smallest_edge_face(op, !geometry.is_sphere()),
        R});
     // The candidates: edge points whose undeformed gap is below the law's
-    // reach plus three times the largest approach the 1-DOF model expects
-    // (or the Hertz zone's own gap a^2 / 2R, if larger).
-    const auto estimate = estimate_collision(parameters);
+    // reach plus three times the largest approach the 1-DOF model expects,
+    // or a plastic body's bound of it (or the Hertz zone's own gap
+    // a^2 / 2R, if larger).
+    const double approach =
+      std::max(estimate_collision(parameters).largest_compression,
+               plastic_approach_bound(parameters));
     // A turning body's contact moves along its edge (contact_drift()).
     const double reach = largest_half_width + contact_drift(parameters);
     candidate_bound    = (law ? law->reach() : 0.) +
-                      3. * std::max(estimate.largest_compression,
-                                    reach * reach / (2. * R));
+                      3. * std::max(approach, reach * reach / (2. * R));
     // No inertia on the edge within the uniformly refined contact zone;
     // with the constraint, on all the candidates' faces (their undeformed
     // gap t^2 / 2R is below the bound).

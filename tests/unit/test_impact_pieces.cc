@@ -26,6 +26,7 @@
 #include <array>
 #include <cmath>
 #include <memory>
+#include <string>
 
 using namespace DiskImpact;
 
@@ -398,4 +399,34 @@ TEST_CASE("1-DOF log-law collision against an ODE integration", "[impact]")
       CHECK(reference.contact_time == Approx(lo).epsilon(1e-6));
       CHECK(reference.max_compression == Approx(delta_max).epsilon(1e-6));
     }
+}
+
+TEST_CASE("a plastic sphere's approach bound: Y's pressure over a^2 = R delta",
+          "[impact]")
+{
+  // m v^2 / 2 = pi R Y delta^2 / 2: delta = v sqrt(m / (pi R Y)), with
+  // m = 4/3 pi R^3 rho and v in units of c = sqrt(E2 / rho).
+  const auto parameters_for = [](const std::string &material) {
+    dealii::ParameterHandler prm;
+    Parameters::declare_parameters(prm);
+    prm.parse_input_from_string("set Task = impact\n"
+                                "subsection Geometry\n"
+                                "  set Body = sphere\n"
+                                "end\n"
+                                "subsection Impact\n"
+                                "  set Velocity = 0.001\n"
+                                "end\n"
+                                "subsection Material\n" +
+                                material + "end\n");
+    Parameters parameters;
+    parameters.parse_parameters(prm);
+    return parameters;
+  };
+  const Parameters plastic =
+    parameters_for("  set Poisson ratio = 0.3\n  set Yield stress = 0.002\n");
+  const double c = plastic.material.velocity_unit();
+  const double v = 0.001 * c, mass = 4. / 3. * M_PI;
+  CHECK(plastic_approach_bound(plastic) ==
+        Approx(v * std::sqrt(mass / (M_PI * 0.002))).epsilon(1e-12));
+  CHECK(plastic_approach_bound(parameters_for("")) == 0.);
 }
