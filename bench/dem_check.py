@@ -134,10 +134,10 @@ def main():
     if failed:
         sys.exit("dem_check: a DEM code misses epsilon at the reference speed")
     if thornton:
-        thornton_check(args, law, thornton, run)
+        thornton_check(args, law, thornton, radius, density, run)
 
 
-def thornton_check(args, law, thornton, run):
+def thornton_check(args, law, thornton, radius, density, run):
     """LIGGGHTS' thornton_ning with the exported yield ratio against the
     fitted model's epsilon at every speed (the 'eps diskimpact' column is
     the model's here); exits 1 if a speed misses it by more than the
@@ -158,8 +158,6 @@ def thornton_check(args, law, thornton, run):
     # model's closed form.
     snippet = open(os.path.join(args.directory, "dem",
                                 "liggghts_thornton.txt")).read()
-    radius = law["si_scales"]["R_m"]
-    density = float(law["parameters"]["Material"]["Density"])
     fine = dem_collision.STEPS_PER_CONTACT * 2
     print(f"  extrapolated from {fine // 2} and {fine} steps per contact:")
     extrapolated_error = 0.0

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace DiskImpact
 {
@@ -33,6 +34,33 @@ namespace DiskImpact
          parameters.material.relaxation_time(),
          partner.material().relaxation_time()});
     }
+
+    /// A sphere's impact as one body on the wall: its mass and contact
+    /// body (radius, E*), or the pair's reduced mass and equivalent body.
+    std::pair<double, Reference::ContactBody>
+    wall_equivalent_sphere(const Parameters &parameters)
+    {
+      const auto &material = parameters.material;
+      double      mass     = material.density() * parameters.geometry.volume();
+      Reference::ContactBody body{parameters.geometry.radius(),
+                                  material.in_plane_young_modulus(),
+                                  0.};
+      const auto            &partner = parameters.partner;
+      if (partner.is_body())
+        {
+          const double m2 =
+            partner.material().density() *
+            parameters.geometry.with_radius(partner.radius()).volume();
+          mass = mass * m2 / (mass + m2);
+          body = Reference::equivalent_body(
+            true,
+            body,
+            {partner.radius(),
+             partner.material().in_plane_young_modulus(),
+             0.});
+        }
+      return {mass, body};
+    }
   } // namespace
 
   double
@@ -50,24 +78,9 @@ namespace DiskImpact
   {
     // Hertz's impact of the sphere on the wall, or of the pair as its
     // equivalent body with the reduced mass; a^2 = R_eff delta_max.
-    const auto  &material = parameters.material;
-    const double v0   = parameters.impact.normal_velocity() * material.velocity_unit();
-    double       mass = material.density() * parameters.geometry.volume();
-    Reference::ContactBody body{parameters.geometry.radius(),
-                                material.in_plane_young_modulus(),
-                                0.};
-    const auto            &partner = parameters.partner;
-    if (partner.is_body())
-      {
-        const double m2 =
-          partner.material().density() *
-          parameters.geometry.with_radius(partner.radius()).volume();
-        mass = mass * m2 / (mass + m2);
-        body = Reference::equivalent_body(
-          true,
-          body,
-          {partner.radius(), partner.material().in_plane_young_modulus(), 0.});
-      }
+    const double v0 =
+      parameters.impact.normal_velocity() * parameters.material.velocity_unit();
+    const auto [mass, body] = wall_equivalent_sphere(parameters);
     return std::sqrt(
       body.radius *
       Reference::hertz_sphere_impact(mass, body.modulus, body.radius, v0)
@@ -88,20 +101,8 @@ namespace DiskImpact
       return 0.;
     const double v0 =
       parameters.impact.normal_velocity() * material.velocity_unit();
-    double mass   = material.density() * parameters.geometry.volume();
-    double radius = parameters.geometry.radius();
-    if (partner.is_body())
-      {
-        const double m2 =
-          partner.material().density() *
-          parameters.geometry.with_radius(partner.radius()).volume();
-        mass   = mass * m2 / (mass + m2);
-        radius = Reference::equivalent_body(true,
-                                            {radius, 1., 0.},
-                                            {partner.radius(), 1., 0.})
-                   .radius;
-      }
-    return v0 * std::sqrt(mass / (M_PI * radius * yield));
+    const auto [mass, body] = wall_equivalent_sphere(parameters);
+    return v0 * std::sqrt(mass / (M_PI * body.radius * yield));
   }
 
   double

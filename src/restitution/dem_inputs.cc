@@ -90,11 +90,18 @@ namespace DiskImpact
              ten_digits(d.friction) +
              "\nfix m5 all property/global surfaceEnergy peratomtypepair 1 0"
              "\nfix m6 all property/global coefficientYieldRatio peratomtype " +
-             ten_digits(d.yield_ratio) +
+             ten_digits(liggghts_yield_ratio(d)) +
              "\npair_style gran model thornton_ning tangential history\n"
              "pair_coeff * *\n";
     }
   } // namespace
+
+  double
+  liggghts_yield_ratio(const DemInputs &d)
+  {
+    const double e_star = d.young / (1. - d.poisson * d.poisson);
+    return M_PI * d.limiting_pressure / (2. * e_star);
+  }
 
   std::map<std::string, std::string>
   dem_files(const DemInputs &d)
@@ -188,7 +195,7 @@ namespace DiskImpact
       "\nset poisson ratio particles           = " + ten_digits(d.poisson) +
       "\nset restitution coefficient particles = " + ten_digits(d.epsilon) +
       "\nset friction coefficient particles    = " + mu + "\n";
-    if (d.yield_ratio > 0.)
+    if (d.limiting_pressure > 0.)
       files["liggghts_thornton.txt"] = liggghts_thornton_file(d, head.str());
     return files;
   }

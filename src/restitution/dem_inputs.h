@@ -17,10 +17,14 @@ namespace DiskImpact
     double                            friction = 0.;
     Reference::LinearDashpotCollision yade; ///< ViscElMat's (en, tc)
     /// A plastic sphere's Thornton fit (0: elastic, no such file): the
-    /// limiting pressure p_y [Pa], 'coefficientYieldRatio' a_y / R =
-    /// pi p_y / (2 E*) and the model's v_y [m/s].
-    double limiting_pressure = 0., yield_ratio = 0., yield_speed = 0.;
+    /// limiting pressure p_y [Pa] and the model's v_y [m/s].
+    double limiting_pressure = 0., yield_speed = 0.;
   };
+
+  /// LIGGGHTS' 'coefficientYieldRatio' of the Thornton fit in @p d: the
+  /// contact radius of yield over R, a_y / R = pi p_y / (2 E*).
+  double
+  liggghts_yield_ratio(const DemInputs &d);
 
   /// What a 2D DEM code needs for a disk, per unit thickness, in SI.
   struct DiskDemInputs

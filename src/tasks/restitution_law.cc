@@ -284,11 +284,9 @@ namespace DiskImpact
           d.friction = parameters.contact.friction_coefficient();
           if (thornton_fitted)
             {
-              const double e_star = d.young / (1. - d.poisson * d.poisson);
               d.limiting_pressure =
                 thornton.pressure_ratio * material.yield_stress() *
                 units.young_modulus() / material.young_modulus();
-              d.yield_ratio = M_PI * d.limiting_pressure / (2. * e_star);
               d.yield_speed = thornton.yield_speed * units.speed();
             }
           files  = dem_files(d);
@@ -306,7 +304,7 @@ namespace DiskImpact
                    << ", \"dissipative_constant_si\": " << ten_digits(d.A);
           if (thornton_fitted)
             dem_json << ", \"liggghts_thornton_ning_yield_ratio\": "
-                     << ten_digits(d.yield_ratio)
+                     << ten_digits(liggghts_yield_ratio(d))
                      << ", \"limiting_pressure_si\": "
                      << ten_digits(d.limiting_pressure)
                      << ", \"thornton_yield_speed_si\": "

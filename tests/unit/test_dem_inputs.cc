@@ -96,9 +96,14 @@ TEST_CASE("A plastic sphere's DEM inputs add LIGGGHTS' thornton_ning", "[dem]")
 {
   CHECK(dem_files(law(0.)).count("liggghts_thornton.txt") == 0);
   auto d              = law(0.2);
-  d.limiting_pressure = 3e9, d.yield_ratio = 0.0204, d.yield_speed = 0.2;
+  d.limiting_pressure = 3e9, d.yield_speed = 0.2;
+  // a_y / R = pi p_y / (2 E*), E* = E / (1 - nu^2).
+  const double ratio = M_PI * 3e9 * (1. - 0.09) / (2. * 2.1e11);
+  CHECK(liggghts_yield_ratio(d) == Approx(ratio).epsilon(1e-14));
   const std::string text = dem_files(d).at("liggghts_thornton.txt");
-  CHECK(contains(text, "coefficientYieldRatio peratomtype 0.0204\n"));
+  CHECK(
+    contains(text,
+             "coefficientYieldRatio peratomtype " + ten_digits(ratio) + "\n"));
   CHECK(contains(text, "surfaceEnergy peratomtypepair 1 0\n"));
   CHECK(contains(text, "coefficientFriction peratomtypepair 1 0.2\n"));
   CHECK(contains(text,
