@@ -76,11 +76,14 @@ mesh and time step); CalculiX's are independent of it.
 usage: bench/peer_calculix_3d.py [--hmin H] [--hmax H]
                                  [--steps-per-contact N] [--speed V]
                                  [--reference-model 3d|axisymmetric]
+                                 [--reference-levels N]
                                  [--reference EPS BAR] [--work DIR]
 
 --speed V runs the same at v = V c (the contact time scaled as Hertz's,
 v^(-1/5)); at low speeds --reference-model axisymmetric takes the sharper
 axisymmetric study as the reference (docs/validation/peer-calculix-3d.md).
+--reference-levels N gives the reference study N mesh levels instead of
+its default (2 in 3D, 3 axisymmetric).
        (bench/peer_calculix_3d.sh installs calculix-ccx and gmsh and
        calls this)
 """
@@ -310,14 +313,20 @@ def calculix_input(work, hmin, hmax, dt, end_time):
     return 3 * len(ball), tet10_volume(ball, tets)       # rho = 1
 
 
+def reference_study(args):
+    """The reference study's setting and its number of mesh levels."""
+    model, levels = ((AXISYMMETRIC, AXISYMMETRIC_LEVELS)
+                     if args.reference_model == "axisymmetric" else
+                     (REFERENCE, REFERENCE_LEVELS))
+    return model, args.reference_levels or levels
+
+
 def run_all(args, work):
     """The reference (unless given), CalculiX, then every diskimpact
     setting, one after the other; each part's wall time."""
     seconds = {}
     if not args.reference:
-        reference = (pc.run_reference(work, AXISYMMETRIC, AXISYMMETRIC_LEVELS)
-                     if args.reference_model == "axisymmetric" else
-                     pc.run_reference(work, REFERENCE, REFERENCE_LEVELS))
+        reference = pc.run_reference(work, *reference_study(args))
         seconds["reference study"] = reference["seconds"]
     else:
         eps, bar = args.reference
@@ -335,9 +344,7 @@ def run_all(args, work):
 
 
 def report(args, reference, ccx, own):
-    model, levels = ((AXISYMMETRIC, AXISYMMETRIC_LEVELS)
-                     if args.reference_model == "axisymmetric" else
-                     (REFERENCE, REFERENCE_LEVELS))
+    model, levels = reference_study(args)
     pc.report_reference(reference, f"{args.reference_model} model, "
                         f"Q{model['degree']}, penalty factor "
                         f"{model['kappa']:g}, {levels} mesh levels")
@@ -375,6 +382,10 @@ def main():
                                    "the reference study: diskimpact in 3D "
                                    "(two levels) or the axisymmetric model "
                                    "(three levels; sharper at low speeds)"}),
+            ("--reference-levels", {"type": int, "choices": range(2, 7),
+                                    "metavar": "N", "help":
+                                    "mesh levels of the reference study "
+                                    "(default: 2 in 3D, 3 axisymmetric)"}),
             ("--reference", {"type": float, "nargs": 2,
                              "metavar": ("EPS", "BAR"), "help":
                              "use this reference epsilon and bar; skips "
