@@ -19,13 +19,14 @@ def run_diskimpact(prm, ranks):
     return time.time() - start
 
 
-def plastic_sphere_prm(directory, refinements, impact, stepping):
-    """Task impact of the elastic-perfectly-plastic sphere of
+def plastic_sphere_prm(directory, refinements, impact, stepping,
+                       task="impact"):
+    """Task @p task of the elastic-perfectly-plastic sphere of
     params/sweep_plastic_sphere.prm (nu = 0.3, Y = 0.002 E*, penalty factor
     100), output in @p directory, with @p refinements global refinements
     and the lines @p impact and @p stepping of subsections Impact and Time
     stepping."""
-    return f"""set Task = impact
+    return f"""set Task = {task}
 set Output directory = {directory}
 subsection Geometry
   set Body = sphere

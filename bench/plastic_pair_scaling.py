@@ -61,8 +61,7 @@ def study_prm(directory, speed, levels, partner_radius):
         "  set Elements across contact = 6\n"
         "  set Grading = 0.6\n"
         "  set Output interval = 0\n",
-        "  set Time step fraction = 0.01\n")
-    text = text.replace("set Task = impact", "set Task = impact convergence")
+        "  set Time step fraction = 0.01\n", task="impact convergence")
     text += f"subsection Impact convergence\n  set Mesh levels = {levels}\nend\n"
     if partner_radius > 0:
         text += ("subsection Partner\n  set Kind = body\n"
