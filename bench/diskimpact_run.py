@@ -19,6 +19,13 @@ def run_diskimpact(prm, ranks):
     return time.time() - start
 
 
+# The plastic benches' sphere (params/sweep_plastic_sphere.prm): its yield
+# stress (Y = 0.002 E* at nu = 0.3, E = 1) and speed of first yield v_y / c
+# on the rigid wall (docs/validation/plastic-sphere.md).
+PLASTIC_SPHERE_YIELD_STRESS = 0.0021978022
+PLASTIC_SPHERE_YIELD_SPEED = 9.22133e-7
+
+
 def plastic_sphere_prm(directory, refinements, impact, stepping,
                        task="impact"):
     """Task @p task of the elastic-perfectly-plastic sphere of
@@ -34,7 +41,7 @@ subsection Geometry
 end
 subsection Material
   set Poisson ratio = 0.3
-  set Yield stress = 0.0021978022
+  set Yield stress = {PLASTIC_SPHERE_YIELD_STRESS}
 end
 subsection Contact
   set Penalty factor = 100

@@ -29,7 +29,8 @@ import math
 import os
 import tempfile
 
-from diskimpact_run import plastic_sphere_prm, run_diskimpact
+from diskimpact_run import (PLASTIC_SPHERE_YIELD_SPEED, plastic_sphere_prm,
+                            run_diskimpact)
 
 parser = argparse.ArgumentParser()
 parser.add_argument("--speeds", default="100,300,1000",
@@ -37,7 +38,6 @@ parser.add_argument("--speeds", default="100,300,1000",
 parser.add_argument("--ranks", type=int, default=2)
 args = parser.parse_args()
 
-SPEED_OF_FIRST_YIELD = 9.22133e-7  # c, params/sweep_plastic_sphere.prm
 YIELD_STRAIN = 0.002               # Y / E*
 ELEMENTS_ACROSS_HERTZ = 12
 
@@ -77,7 +77,7 @@ print(f"{'v/v_y':>6} {'epsilon':>10} {'Hertz mesh':>10} {'dt/2':>9} "
 previous = None
 with tempfile.TemporaryDirectory() as work:
     for over in [float(s) for s in args.speeds.split(",")]:
-        speed = over * SPEED_OF_FIRST_YIELD
+        speed = over * PLASTIC_SPHERE_YIELD_SPEED
         hertz, history = impact(work, f"v{over:g}_hertz", speed,
                                 ELEMENTS_ACROSS_HERTZ)
         a_hertz = math.sqrt(float(hertz["one_dof_delta_max"]))

@@ -33,11 +33,9 @@ import os
 import sys
 import tempfile
 
-from diskimpact_run import plastic_sphere_prm, run_diskimpact
-
-# v_y / c of the sphere of params/sweep_plastic_sphere.prm on the rigid
-# wall (docs/validation/plastic-sphere.md; p0 = 1.6128 Y at nu = 0.3).
-WALL_YIELD_SPEED = 9.22133e-7
+from diskimpact_run import (PLASTIC_SPHERE_YIELD_SPEED as WALL_YIELD_SPEED,
+                            PLASTIC_SPHERE_YIELD_STRESS, plastic_sphere_prm,
+                            run_diskimpact)
 
 
 def pair_yield_speed(partner_radius):
@@ -67,7 +65,8 @@ def study_prm(directory, speed, levels, partner_radius):
         text += ("subsection Partner\n  set Kind = body\n"
                  f"  set Radius = {partner_radius:g}\n"
                  "  subsection Material\n    set Poisson ratio = 0.3\n"
-                 "    set Yield stress = 0.0021978022\n  end\nend\n")
+                 f"    set Yield stress = {PLASTIC_SPHERE_YIELD_STRESS}\n"
+                 "  end\nend\n")
     return text
 
 

@@ -22,7 +22,8 @@ import csv
 import os
 import tempfile
 
-from diskimpact_run import plastic_sphere_prm, run_diskimpact
+from diskimpact_run import (PLASTIC_SPHERE_YIELD_SPEED, plastic_sphere_prm,
+                            run_diskimpact)
 
 parser = argparse.ArgumentParser()
 parser.add_argument("--ranks", type=int, default=2)
@@ -32,9 +33,6 @@ parser.add_argument("--elements", type=int, default=16,
                     help="elements across Hertz's contact")
 args = parser.parse_args()
 
-# 10 v_y of params/impact_convergence_plastic_sphere.prm.
-speed_of_first_yield = 9.22133e-7
-
 
 def run(work, over, solver):
     directory = os.path.join(work, f"v{over}_{solver.replace(' ', '_')}")
@@ -42,7 +40,7 @@ def run(work, over, solver):
     with open(prm, "w") as f:
         f.write(plastic_sphere_prm(
             directory, 1,
-            f"  set Velocity = {over * speed_of_first_yield:.6e}\n"
+            f"  set Velocity = {over * PLASTIC_SPHERE_YIELD_SPEED:.6e}\n"
             f"  set Elements across contact = {args.elements}\n"
             "  set Grading = 0.6\n",
             "  set Time step fraction = 0.005\n"
