@@ -26,44 +26,61 @@ namespace DiskImpact
     return std::sqrt((axisymmetric ? 2.5 : 4.) * second_moment / force);
   }
 
-  ContactOperator::ContactOperator(const ElasticityOperator<2>      &op,
-                                   const RigidWall<2>               &wall,
-                                   std::shared_ptr<const ContactLaw> law,
-                                   const Point<2> &body_center)
+  template <int dim>
+  ContactOperator<dim>::ContactOperator(const ElasticityOperator<dim>    &op,
+                                        const RigidWall<dim>             &wall,
+                                        std::shared_ptr<const ContactLaw> law,
+                                        const Point<dim> &body_center,
+                                        const bool        circular)
       : op(op)
       , wall(wall)
       , law(std::move(law))
+      , circular(circular)
       , origin(body_center - wall.gap(body_center) * wall.normal)
-      , tangent_direction({-wall.normal[1], wall.normal[0]})
+      , tangent_direction(wall.tangents()[0])
   {
   }
 
+  template <int dim>
+  double
+  ContactOperator<dim>::coordinate_along_wall(const Point<dim> &x) const
+  {
+    // Hertz's coordinate: along the undeformed edge (the deformed edge is
+    // shorter by a strain of order a / R).
+    const Tensor<1, dim> offset = x - origin;
+    if (circular)
+      return (offset - (offset * wall.normal) * wall.normal).norm();
+    return offset * tangent_direction;
+  }
+
+  template <int dim>
   ContactState
-  ContactOperator::assemble(const PETScWrappers::MPI::Vector &ghosted_u,
-                            PETScWrappers::MPI::Vector       *residual,
-                            PETScWrappers::MPI::SparseMatrix *tangent) const
+  ContactOperator<dim>::assemble(
+    const PETScWrappers::MPI::Vector &ghosted_u,
+    PETScWrappers::MPI::Vector       *residual,
+    PETScWrappers::MPI::SparseMatrix *tangent) const
   {
     const auto &dof_handler = op.get_dof_handler();
     const auto &fe          = dof_handler.get_fe();
     // More points than the element needs: the pressure has a kink where
     // contact ends inside a face.
-    const QGauss<1>    quadrature(fe.degree + 3);
-    FEFaceValues<2>    face_values(op.get_mapping(),
-                                fe,
-                                quadrature,
-                                update_values | update_quadrature_points |
-                                  update_JxW_values);
-    const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
-    Vector<double>     cell_residual(dofs_per_cell);
-    FullMatrix<double> cell_tangent(dofs_per_cell, dofs_per_cell);
+    const QGauss<dim - 1> quadrature(fe.degree + 3);
+    FEFaceValues<dim>     face_values(op.get_mapping(),
+                                  fe,
+                                  quadrature,
+                                  update_values | update_quadrature_points |
+                                    update_JxW_values);
+    const unsigned int    dofs_per_cell = fe.n_dofs_per_cell();
+    Vector<double>        cell_residual(dofs_per_cell);
+    FullMatrix<double>    cell_tangent(dofs_per_cell, dofs_per_cell);
     std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
-    std::vector<Tensor<1, 2>>            u(quadrature.size());
+    std::vector<Tensor<1, dim>>          u(quadrature.size());
     std::vector<double>                  phi_n(dofs_per_cell);
     const FEValuesExtractors::Vector     displacement(0);
 
-    const Section<2> &section = op.get_section();
-    ContactState      state;
-    state.axisymmetric = section.is_axisymmetric();
+    const Section<dim> &section = op.get_section();
+    ContactState        state;
+    state.axisymmetric = section.is_axisymmetric() || circular;
     for_each_curved_edge_face(
       dof_handler, [&](const auto &cell, const unsigned int f) {
         face_values.reinit(cell, f);
@@ -73,18 +90,16 @@ namespace DiskImpact
         cell_tangent    = 0.;
         for (const unsigned int q : face_values.quadrature_point_indices())
           {
-            const Point<2> x   = face_values.quadrature_point(q) + u[q];
-            const double   gap = wall.gap(x);
+            const Point<dim> x   = face_values.quadrature_point(q) + u[q];
+            const double     gap = wall.gap(x);
             if (gap >= 0.)
               continue;
             in_contact      = true;
             const double p  = law->pressure(gap);
             const double ds = face_values.JxW(q) *
                               section.measure(face_values.quadrature_point(q));
-            // Hertz's coordinate: along the undeformed edge (the
-            // deformed edge is shorter by a strain of order a / R).
             const double t =
-              (face_values.quadrature_point(q) - origin) * tangent_direction;
+              coordinate_along_wall(face_values.quadrature_point(q));
             state.force += p * ds;
             state.energy += law->energy(gap) * ds;
             state.second_moment += p * t * t * ds;
@@ -120,17 +135,18 @@ namespace DiskImpact
     return state;
   }
 
+  template <int dim>
   std::vector<std::pair<double, double>>
-  ContactOperator::pressure_profile(
+  ContactOperator<dim>::pressure_profile(
     const PETScWrappers::MPI::Vector &ghosted_u) const
   {
-    const auto               &dof_handler = op.get_dof_handler();
-    const QGauss<1>           quadrature(dof_handler.get_fe().degree + 3);
-    FEFaceValues<2>           face_values(op.get_mapping(),
-                                dof_handler.get_fe(),
-                                quadrature,
-                                update_values | update_quadrature_points);
-    std::vector<Tensor<1, 2>> u(quadrature.size());
+    const auto                 &dof_handler = op.get_dof_handler();
+    const QGauss<dim - 1>       quadrature(dof_handler.get_fe().degree + 3);
+    FEFaceValues<dim>           face_values(op.get_mapping(),
+                                  dof_handler.get_fe(),
+                                  quadrature,
+                                  update_values | update_quadrature_points);
+    std::vector<Tensor<1, dim>> u(quadrature.size());
     std::vector<std::pair<double, double>> samples;
     for_each_curved_edge_face(
       dof_handler, [&](const auto &cell, const unsigned int f) {
@@ -139,12 +155,11 @@ namespace DiskImpact
           ghosted_u, u);
         for (const unsigned int q : face_values.quadrature_point_indices())
           {
-            const Point<2> x = face_values.quadrature_point(q) + u[q];
-            const double   p = law->pressure(wall.gap(x));
+            const Point<dim> x = face_values.quadrature_point(q) + u[q];
+            const double     p = law->pressure(wall.gap(x));
             if (p > 0.)
-              samples.emplace_back((face_values.quadrature_point(q) - origin) *
-                                     tangent_direction,
-                                   p);
+              samples.emplace_back(
+                coordinate_along_wall(face_values.quadrature_point(q)), p);
           }
       });
     std::vector<std::pair<double, double>> all;
@@ -157,8 +172,8 @@ namespace DiskImpact
 
   template <int dim>
   double
-  ContactOperator::smallest_edge_face(const ElasticityOperator<dim> &op,
-                                      const bool extruded_along_z)
+  smallest_edge_face(const ElasticityOperator<dim> &op,
+                     const bool                     extruded_along_z)
   {
     const auto size = [extruded_along_z](const auto &face) {
       const double measure = face->measure();
@@ -184,8 +199,10 @@ namespace DiskImpact
                                op.get_dof_handler().get_communicator());
   }
 
+  template class ContactOperator<2>;
+  template class ContactOperator<3>;
   template double
-  ContactOperator::smallest_edge_face(const ElasticityOperator<2> &, bool);
+  smallest_edge_face(const ElasticityOperator<2> &, bool);
   template double
-  ContactOperator::smallest_edge_face(const ElasticityOperator<3> &, bool);
+  smallest_edge_face(const ElasticityOperator<3> &, bool);
 } // namespace DiskImpact

@@ -15,10 +15,12 @@ namespace DiskImpact
   class ElasticityOperator;
 
   /// Integrals of the wall's pressure over the body's boundary (dS = ds
-  /// for a disk, 2 pi r ds for a sphere).
+  /// for a disk, 2 pi r ds for a sphere's meridian, the surface's dS in
+  /// 3D).
   struct ContactState
   {
-    /// Whether the body is a sphere (its pressure is Hertz's of a circle).
+    /// Whether the contact is a circle (a sphere; its pressure is Hertz's
+    /// of a circle).
     bool axisymmetric = false;
     /// int p dS: the wall's force on the body along its normal.
     double force = 0.;
@@ -52,20 +54,34 @@ namespace DiskImpact
     half_width() const;
   };
 
+  /// The size of the smallest face on the curved edge (over all ranks):
+  /// its length; in three dimensions the square root of its area, or, for
+  /// a body extruded along z (a disk of finite thickness), its area over
+  /// its extent along z, the length of its edge in the section as in 2D.
+  template <int dim>
+  double
+  smallest_edge_face(const ElasticityOperator<dim> &op,
+                     bool                           extruded_along_z = false);
+
   /**
-   * The contact (a ContactLaw) of the disk's curved edge with a rigid wall, on
-   * the quadrature points of the edge faces: the residual contribution -int p
-   * (n . v) ds and its consistent tangent -int p'(g) (n . u)(n . v) ds (p' = -k
-   * H(-g) for the penalty, H the Heaviside function), for small strains
-   * (reference edge, current gap).
+   * The contact (a ContactLaw) of the body's curved edge or surface with a
+   * rigid wall, on the quadrature points of its faces: the residual
+   * contribution -int p (n . v) dS and its consistent tangent -int p'(g)
+   * (n . u)(n . v) dS (p' = -k H(-g) for the penalty, H the Heaviside
+   * function), for small strains (reference surface, current gap).
    */
+  template <int dim>
   class ContactOperator
   {
   public:
-    ContactOperator(const ElasticityOperator<2>      &op,
-                    const RigidWall<2>               &wall,
+    /// With @p circular (a sphere in 3D) the contact is a circle about the
+    /// contact point; else a strip (a disk's edge, or its rim in 3D) whose
+    /// coordinate runs along the wall's first tangent.
+    ContactOperator(const ElasticityOperator<dim>    &op,
+                    const RigidWall<dim>             &wall,
                     std::shared_ptr<const ContactLaw> law,
-                    const dealii::Point<2>           &body_center);
+                    const dealii::Point<dim>         &body_center,
+                    bool                              circular = false);
 
     /**
      * Add the contact terms at the displacement @p ghosted_u to @p residual
@@ -77,26 +93,24 @@ namespace DiskImpact
              dealii::PETScWrappers::MPI::Vector       *residual,
              dealii::PETScWrappers::MPI::SparseMatrix *tangent) const;
 
-    /// (t, p) at the quadrature points with p > 0, on all ranks, sorted by t.
+    /// (t, p) at the quadrature points with p > 0, on all ranks, sorted by
+    /// t (the coordinate along the wall; for a circle the distance from
+    /// the contact point).
     std::vector<std::pair<double, double>>
     pressure_profile(const dealii::PETScWrappers::MPI::Vector &ghosted_u) const;
 
-    /// The size of the smallest face on the curved edge (over all ranks):
-    /// its length; in three dimensions the square root of its area, or,
-    /// for a body extruded along z (a disk of finite thickness), its area
-    /// over its extent along z, the length of its edge in the section as
-    /// in 2D.
-    template <int dim>
-    static double
-    smallest_edge_face(const ElasticityOperator<dim> &op,
-                       bool                           extruded_along_z = false);
-
   private:
-    const ElasticityOperator<2>      &op;
-    RigidWall<2>                      wall;
+    /// The coordinate along the wall of the point @p x of the undeformed
+    /// surface.
+    double
+    coordinate_along_wall(const dealii::Point<dim> &x) const;
+
+    const ElasticityOperator<dim>    &op;
+    RigidWall<dim>                    wall;
     std::shared_ptr<const ContactLaw> law;
-    /// Where t = 0: the point of the wall nearest the disk's centre.
-    dealii::Point<2>     origin;
-    dealii::Tensor<1, 2> tangent_direction;
+    bool                              circular;
+    /// Where t = 0: the point of the wall nearest the body's centre.
+    dealii::Point<dim>     origin;
+    dealii::Tensor<1, dim> tangent_direction;
   };
 } // namespace DiskImpact

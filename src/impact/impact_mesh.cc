@@ -137,7 +137,7 @@ namespace DiskImpact
           const double n_cells =
             double(section.n_active_cells()) * double(z.size() - 1);
           require(n_cells <= max_cells,
-                  "Impact: the conforming mesh (" +
+                  "Graded mesh: the conforming mesh (" +
                     std::to_string(section.n_active_cells()) +
                     " cells in the section, " + std::to_string(z.size() - 1) +
                     " layers) would have " + approximately(n_cells) +
@@ -161,8 +161,9 @@ namespace DiskImpact
                                   std::pow(k - 1., 3) * mesh.n_active_cells());
       const double budget = max_cells * 3. * k * k * k;
       require(n_dofs <= budget,
-              "Impact: the mesh (" + std::to_string(mesh.n_active_cells()) +
-                " cells of degree " + std::to_string(degree) + ") has about " +
+              "Graded mesh: the mesh (" +
+                std::to_string(mesh.n_active_cells()) + " cells of degree " +
+                std::to_string(degree) + ") has about " +
                 approximately(n_dofs) + " DoFs, more than the " +
                 approximately(budget) + " this machine's memory holds");
     }

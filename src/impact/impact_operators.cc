@@ -29,10 +29,9 @@ namespace DiskImpact
     // Two bodies: the penalty k = kappa E / h with the pair's modulus
     // 1 / E = 1 / E2 + 1 / E2' (the wall's with identical bodies, whose gap
     // is twice the wall's).
-    law = parameters.contact.law(
-      {contact_modulus(parameters),
-       ContactOperator::smallest_edge_face(op, !geometry.is_sphere()),
-       R});
+    law = parameters.contact.law({contact_modulus(parameters),
+                                  smallest_edge_face(op, !geometry.is_sphere()),
+                                  R});
     // The candidates: edge points whose undeformed gap is below the law's
     // reach plus three times the largest approach the 1-DOF model expects,
     // or a plastic body's bound of it (or the Hertz zone's own gap

@@ -3,6 +3,7 @@
 #include "base/input_error.h"
 #include "base/parameter_lists.h"
 #include "base/run_error.h"
+#include "body/solid_geometry.h"
 #include "contact/penalty_law.h"
 #include "impact/impact_estimates.h"
 #include "impact/impact_mesh.h"
@@ -55,17 +56,30 @@ namespace DiskImpact
                       "total force (E* = E / (1 - nu^2)).");
     prm.declare_entry("Elements across contact",
                       "16",
-                      Patterns::Integer(10, 1000),
+                      Patterns::Integer(4, 1000),
                       "Number of elements across the Hertz half-width "
                       "a = 2 R sqrt(P / (pi E2 R)) (disk) or contact radius "
                       "a = (3 P R / (4 E*))^(1/3) (sphere): cells closer "
                       "than 1.5 a to the contact point get size <= a / this "
-                      "number.");
+                      "number ('Graded mesh = conforming': an even number; a "
+                      "disk in 3D's layers are as thin at its faces).");
+    prm.declare_entry("Graded mesh",
+                      "hanging nodes",
+                      Patterns::Selection("hanging nodes|conforming"),
+                      "'hanging nodes': the mesh refined toward the contact "
+                      "point; 'conforming': graded with half the elements "
+                      "across and twice the grading, then halved without "
+                      "hanging nodes (the impact's 'Graded mesh = "
+                      "conforming'). A disk in 3D takes 'conforming': its "
+                      "section is that mesh, extruded through layers graded "
+                      "toward its face, and a plane model on 'conforming' "
+                      "computes on its section.");
     prm.declare_entry("Grading",
                       "0.3",
                       Patterns::Double(0.01, 1),
                       "Growth of the element size with distance beyond 1.5 a "
-                      "from the contact point [-].");
+                      "from the contact point (a disk in 3D: also of the "
+                      "layers' thickness away from its faces) [-].");
     prm.declare_entry("Newton tolerance",
                       "1e-10",
                       Patterns::Double(1e-15, 1e-3),
@@ -92,6 +106,7 @@ namespace DiskImpact
     prm.enter_subsection("Quasistatic contact");
     loads                   = get_double_list(prm, "Loads");
     elements_across_contact = prm.get_integer("Elements across contact");
+    conforming              = prm.get("Graded mesh") == "conforming";
     grading                 = prm.get_double("Grading");
     newton_tolerance        = prm.get_double("Newton tolerance");
     max_newton_iterations   = prm.get_integer("Maximum Newton iterations");
@@ -110,17 +125,29 @@ namespace DiskImpact
     return *std::max_element(loads.begin(), loads.end());
   }
 
+  template <int dim>
   void
-  QuasistaticContact::create_mesh(const Parameters &parameters,
-                                  const double      load,
-                                  Triangulation<2> &triangulation,
-                                  const double      max_cells) const
+  QuasistaticContact::create_mesh(const Parameters   &parameters,
+                                  const double        load,
+                                  Triangulation<dim> &triangulation,
+                                  const double        max_cells) const
   {
     const auto &geometry = parameters.geometry;
-    const bool  sphere   = geometry.is_axisymmetric();
+    const bool  sphere   = geometry.is_sphere();
     const auto  theory   = Reference::wall_contact_theory(sphere);
     double      a        = theory->half_width(load) * geometry.radius();
-    if (parameters.partner.is_body())
+    if (conforming)
+      {
+        // The impact's conforming mesh, graded for this load.
+        Parameters graded = parameters;
+        graded.impact     = parameters.impact.with_mesh_graded_for(
+          a / geometry.radius(), elements_across_contact, grading, true);
+        create_impact_mesh(graded, triangulation, max_cells);
+        return;
+      }
+    if constexpr (dim == 3)
+      create_solid_triangulation(geometry, triangulation, max_cells);
+    else if (parameters.partner.is_body())
       {
         // Both bodies, graded for the pair's Hertz half-width.
         parameters.partner.create_pair_triangulation(geometry,
@@ -137,13 +164,24 @@ namespace DiskImpact
     else
       geometry.create_triangulation(triangulation, max_cells);
     refine_toward_contact(triangulation,
-                          geometry.contact_point(),
+                          embedded<dim>(geometry.contact_point()),
                           a,
                           elements_across_contact,
                           grading,
                           default_fine_zone_radius,
                           max_cells);
   }
+
+  template void
+  QuasistaticContact::create_mesh(const Parameters &,
+                                  double,
+                                  Triangulation<2> &,
+                                  double) const;
+  template void
+  QuasistaticContact::create_mesh(const Parameters &,
+                                  double,
+                                  Triangulation<3> &,
+                                  double) const;
 
   void
   QuasistaticContact::run(const Parameters &parameters,
@@ -157,47 +195,67 @@ namespace DiskImpact
                                     newton_tolerance,
                                     max_newton_iterations}
         .run(parameters, communicator);
+    if (parameters.geometry.dimension() == 3)
+      run_elastic<3>(parameters, communicator);
+    else
+      run_elastic<2>(parameters, communicator);
+  }
+
+  template <int dim>
+  void
+  QuasistaticContact::run_elastic(const Parameters &parameters,
+                                  MPI_Comm          communicator) const
+  {
     ConditionalOStream pcout(std::cout,
                              Utilities::MPI::this_mpi_process(communicator) ==
                                0);
     const std::string &directory = parameters.run.output_directory;
+    const auto        &geometry  = parameters.geometry;
+    const double       R         = geometry.radius();
     const double       nu2       = parameters.material.in_plane_poisson_ratio();
-    const auto         theory =
-      Reference::wall_contact_theory(parameters.geometry.is_axisymmetric());
-    const std::string symbol = theory->constant_symbol();
+    const auto theory = Reference::wall_contact_theory(geometry.is_sphere());
+    const std::string           symbol      = theory->constant_symbol();
     const Reference::FirstYield hertz_yield = hertz_first_yield(parameters);
 
-    CsvTable law({"load",
-                  "delta_com",
-                  "delta_diameter",
-                  "half_width",
-                  "penetration",
-                  symbol + "_com",
-                  symbol + "_diameter",
-                  "newton_iterations",
-                  "hertz_half_width",
-                  "force_balance_error",
-                  "penalty_factor",
-                  "h_contact",
-                  "n_dofs",
-                  "poisson_ratio_2d",
-                  "first_yield_pressure_ratio",
-                  "first_yield_depth",
-                  "first_yield_offset",
-                  "first_yield_pressure_ratio_hertz",
-                  "first_yield_depth_hertz"});
+    // In 3D neither the first yield nor the pressure profile (which
+    // varies across a disk's thickness): the deformed states show them.
+    std::vector<std::string> columns = {"load",
+                                        "delta_com",
+                                        "delta_diameter",
+                                        "half_width",
+                                        "penetration",
+                                        symbol + "_com",
+                                        symbol + "_diameter",
+                                        "newton_iterations",
+                                        "hertz_half_width",
+                                        "force_balance_error",
+                                        "penalty_factor",
+                                        "h_contact",
+                                        "n_dofs",
+                                        "poisson_ratio_2d"};
+    if constexpr (dim == 2)
+      columns.insert(columns.end(),
+                     {"first_yield_pressure_ratio",
+                      "first_yield_depth",
+                      "first_yield_offset",
+                      "first_yield_pressure_ratio_hertz",
+                      "first_yield_depth_hertz"});
+    else if (!geometry.is_sphere())
+      columns.insert(columns.end(), {"thickness", "faces_held"});
+    CsvTable law(columns);
     CsvTable profile({"load", "y", "pressure", "pressure_hertz"});
     std::vector<std::pair<double, std::string>> records;
 
     pcout << "     load        " << symbol << "_com    " << symbol
           << "_diameter   a/a_Hertz-1   force bal.   penetration  Newton   "
-             "DoFs   p0/Y first yield\n";
+             "DoFs"
+          << (dim == 2 ? "   p0/Y first yield\n" : "\n");
     for (unsigned int i = 0; i < loads.size(); ++i)
       {
-        WallContactProblem problem(parameters,
-                                   loads[i],
-                                   loads[i],
-                                   communicator);
+        WallContactProblem<dim> problem(parameters,
+                                        loads[i],
+                                        loads[i],
+                                        communicator);
         // Start from the rigid translation whose overlap with the wall is
         // as wide as the Hertz contact: depth a^2 / (2 R).
         const double a_hertz = theory->half_width(loads[i]);
@@ -224,25 +282,32 @@ namespace DiskImpact
           law.add(v);
         law.add(p.n_dofs);
         law.add(nu2);
-        // p0 / Y at first yield: the FE's, and Hertz's half-space.
-        for (const double v : {1. / p.von_mises_max,
-                               p.von_mises_depth,
-                               p.von_mises_offset,
-                               hertz_yield.pressure_ratio,
-                               hertz_yield.depth})
-          law.add(v);
-
-        // Pressure in units of P / R (disk) or P / R^2 (sphere) against
-        // Hertz (Gerl & Zippelius 1999, eq. 46).
-        const double R = parameters.geometry.radius();
-        for (const auto &[y, pressure] : problem.pressure_profile())
+        if constexpr (dim == 2)
           {
-            const double t = y / R;
-            profile.start_row();
-            profile.add(p.load);
-            profile.add(t);
-            profile.add(pressure / problem.pressure_unit());
-            profile.add(theory->pressure(t, p.load));
+            // p0 / Y at first yield: the FE's, and Hertz's half-space.
+            for (const double v : {1. / p.von_mises_max,
+                                   p.von_mises_depth,
+                                   p.von_mises_offset,
+                                   hertz_yield.pressure_ratio,
+                                   hertz_yield.depth})
+              law.add(v);
+
+            // Pressure in units of P / R (disk) or P / R^2 (sphere) against
+            // Hertz (Gerl & Zippelius 1999, eq. 46).
+            for (const auto &[y, pressure] : problem.pressure_profile())
+              {
+                const double t = y / R;
+                profile.start_row();
+                profile.add(p.load);
+                profile.add(t);
+                profile.add(pressure / problem.pressure_unit());
+                profile.add(theory->pressure(t, p.load));
+              }
+          }
+        else if (!geometry.is_sphere())
+          {
+            law.add(geometry.thickness() / R);
+            law.add(geometry.faces_held() ? 1u : 0u);
           }
         records.emplace_back(p.load, problem.write_state(directory, i));
 
@@ -253,15 +318,18 @@ namespace DiskImpact
              << std::scientific << std::setprecision(2) << std::setw(14)
              << p.half_width / a_hertz - 1. << std::setw(13) << p.force_balance
              << std::setw(13) << p.penetration << std::setw(7)
-             << p.newton_iterations << std::setw(9) << p.n_dofs << std::fixed
-             << std::setprecision(4) << std::setw(10) << 1. / p.von_mises_max
-             << " at " << std::setprecision(3) << p.von_mises_depth << " a\n";
-        pcout << line.str() << std::flush;
+             << p.newton_iterations << std::setw(9) << p.n_dofs;
+        if (dim == 2)
+          line << std::fixed << std::setprecision(4) << std::setw(10)
+               << 1. / p.von_mises_max << " at " << std::setprecision(3)
+               << p.von_mises_depth << " a";
+        pcout << line.str() << std::endl;
       }
-    pcout << "First yield (von Mises) in Hertz's half-space: p0/Y = "
-          << hertz_yield.pressure_ratio << " at depth " << hertz_yield.depth
-          << " a" << std::endl;
-    if (parameters.geometry.is_axisymmetric())
+    if (dim == 2)
+      pcout << "First yield (von Mises) in Hertz's half-space: p0/Y = "
+            << hertz_yield.pressure_ratio << " at depth " << hertz_yield.depth
+            << " a" << std::endl;
+    if (geometry.is_sphere())
       {
         const auto derived = Reference::sphere_finite_size_constants(
           parameters.material.poisson_ratio());
@@ -275,17 +343,19 @@ namespace DiskImpact
              << " (com), " << derived.diameter << " (diameter)\n";
         pcout << line.str() << std::flush;
       }
-    else
+    else if (dim == 2 || geometry.faces_held())
       pcout << "Gerl & Zippelius 1999, eq. 57: C = -1 - nu2 = " << -1. - nu2
             << std::endl;
     on_root(communicator, [&]() {
       law.write(directory + "/contact_law.csv");
-      profile.write(directory + "/pressure_profile.csv");
+      if (dim == 2)
+        profile.write(directory + "/pressure_profile.csv");
       write_atomically(directory + "/contact.pvd", [&](std::ostream &out) {
         DataOutBase::write_pvd_record(out, records);
       });
     });
   }
+
   void
   QuasistaticContact::run_pair(const Parameters &parameters,
                                MPI_Comm          communicator) const

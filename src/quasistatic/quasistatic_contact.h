@@ -40,8 +40,11 @@ namespace DiskImpact
    * Reference::WallContactTheory. Per load: a mesh graded toward the contact
    * point so the elements across the whole Hertz half-width are small, then
    * Newton's method with a backtracking line search on the penalty contact
-   * problem. Writes contact_law.csv, pressure_profile.csv and the deformed
-   * states (contact.pvd). An elastic-plastic body is loaded to the
+   * problem. Writes contact_law.csv, pressure_profile.csv (two
+   * dimensions) and the deformed states (contact.pvd). A disk of finite
+   * thickness in 3D is its quarter y >= 0, 0 <= z <= H/2 (P per unit
+   * thickness as in 2D), the sphere in 3D its quarter y >= 0, z >= 0. An
+   * elastic-plastic body is loaded to the
    * largest of the loads and unloaded instead (QuasistaticIndentation).
    */
   class QuasistaticContact
@@ -58,18 +61,38 @@ namespace DiskImpact
     /// The largest of the 'Loads'.
     double
     largest_load() const;
+    /// 'Elements across contact'.
+    unsigned int
+    elements_across() const
+    {
+      return elements_across_contact;
+    }
+    /// 'Graded mesh = conforming'.
+    bool
+    conforming_mesh() const
+    {
+      return conforming;
+    }
 
     /// The mesh for @p load, graded toward the contact point (with a
-    /// partner body both bodies', for the pair's Hertz half-width); throws
-    /// an InputError if it would exceed about @p max_cells cells.
+    /// partner body both bodies', for the pair's Hertz half-width; a disk
+    /// in 3D: its section graded without hanging nodes, extruded through
+    /// layers graded toward the face); throws an InputError if it would
+    /// exceed about @p max_cells cells.
+    template <int dim>
     void
     create_mesh(
-      const Parameters         &parameters,
-      double                    load,
-      dealii::Triangulation<2> &triangulation,
+      const Parameters           &parameters,
+      double                      load,
+      dealii::Triangulation<dim> &triangulation,
       double max_cells = std::numeric_limits<double>::infinity()) const;
 
   private:
+    /// run() for an elastic body on the wall, in two or three dimensions.
+    template <int dim>
+    void
+    run_elastic(const Parameters &parameters, MPI_Comm communicator) const;
+
     /// run() with a partner body (QuasistaticPair): contact_law.csv with
     /// the approach of the centres, each body's share and the constants.
     void
@@ -77,6 +100,7 @@ namespace DiskImpact
 
     std::vector<double> loads;
     unsigned int        elements_across_contact = 16;
+    bool                conforming              = false;
     double              grading                 = 0.3;
     double              newton_tolerance        = 1e-10;
     unsigned int        max_newton_iterations   = 30;

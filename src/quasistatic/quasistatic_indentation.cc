@@ -70,10 +70,10 @@ namespace DiskImpact
     const auto         theory =
       Reference::wall_contact_theory(parameters.geometry.is_axisymmetric());
 
-    WallContactProblem problem(parameters,
-                               largest_load / steps,
-                               largest_load,
-                               communicator);
+    WallContactProblem<2> problem(parameters,
+                                  largest_load / steps,
+                                  largest_load,
+                                  communicator);
     problem.enable_plasticity();
     // Energies in units of P_unit R, P_unit the force of load 1.
     const double energy_unit = problem.force(1.) * R;

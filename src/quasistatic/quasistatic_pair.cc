@@ -59,7 +59,7 @@ namespace DiskImpact
              {geometry.center() + geometry.radius() * n,
               partner.center() - partner.radius() * n});
     op.assemble(std::vector<Material>{parameters.material, partner.material()});
-    h_contact = ContactOperator::smallest_edge_face(op);
+    h_contact = smallest_edge_face(op);
 
     // Candidates: edge points whose undeformed gap is below three times
     // that of the edge of Hertz's contact, a^2 / (2 R_eff), beyond the law's

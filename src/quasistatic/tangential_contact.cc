@@ -241,8 +241,7 @@ namespace DiskImpact
       settings.create_mesh(parameters, load, triangulation);
       op.setup(triangulation, geometry, false);
       op.assemble(parameters.material);
-      h_contact =
-        ContactOperator::smallest_edge_face(op, !geometry.is_sphere());
+      h_contact       = smallest_edge_face(op, !geometry.is_sphere());
       law             = parameters.contact.law({modulus, h_contact, R});
       candidate_bound = law->reach() + 3. * a_hertz * a_hertz / (2. * R);
 

@@ -31,18 +31,19 @@ namespace DiskImpact
         0.);
   }
 
-  WallContactProblem::WallContactProblem(const Parameters &parameters,
-                                         const double      load,
-                                         const double      mesh_load,
-                                         MPI_Comm          communicator)
+  template <int dim>
+  WallContactProblem<dim>::WallContactProblem(const Parameters &parameters,
+                                              const double      load,
+                                              const double      mesh_load,
+                                              MPI_Comm          communicator)
       : parameters(parameters)
       , load(load)
-      , theory(Reference::wall_contact_theory(
-          parameters.geometry.is_axisymmetric()))
+      , theory(Reference::wall_contact_theory(parameters.geometry.is_sphere()))
       , communicator(communicator)
       , triangulation(communicator,
-                      Triangulation<2>::limit_level_difference_at_vertices)
+                      Triangulation<dim>::limit_level_difference_at_vertices)
       , op(parameters.finite_element.degree)
+      , wall(parameters.contact.wall<dim>())
       , hold_dof(numbers::invalid_dof_index)
   {
     const auto &geometry = parameters.geometry;
@@ -52,15 +53,15 @@ namespace DiskImpact
     op.setup(triangulation, geometry, true);
     op.assemble(parameters.material);
 
-    h_contact             = ContactOperator::smallest_edge_face(op);
-    const RigidWall<2> wall = parameters.contact.wall();
-    contact               = std::make_unique<ContactOperator>(
+    h_contact = smallest_edge_face(op, dim == 3 && !geometry.is_sphere());
+    contact   = std::make_unique<ContactOperator<dim>>(
       op,
       wall,
       parameters.contact.law({parameters.material.in_plane_young_modulus(),
-                                            h_contact,
-                                            geometry.radius()}),
-      geometry.center());
+                                h_contact,
+                                geometry.radius()}),
+      embedded<dim>(geometry.center()),
+      dim == 3 && geometry.is_sphere());
 
     body_force    = op.create_vector();
     plastic_force = op.create_vector();
@@ -69,8 +70,10 @@ namespace DiskImpact
     force_scale = body_force.l2_norm();
     set_load(load);
 
-    // The wall-normal DoF at the point nearest the wall.
-    const Point<2>     pole      = geometry.center() - geometry.radius() * wall.normal;
+    // The wall-normal DoF at the point nearest the wall (in 3D on the
+    // plane z = 0).
+    const Point<dim> pole =
+      embedded<dim>(geometry.center()) - geometry.radius() * wall.normal;
     const unsigned int component = std::abs(wall.normal[0]) > 0.5 ? 0 : 1;
     for (const auto &cell : op.get_dof_handler().active_cell_iterators())
       if (cell->is_locally_owned())
@@ -81,71 +84,82 @@ namespace DiskImpact
                 op.get_dof_handler().locally_owned_dofs().is_element(hold_dof);
   }
 
-  WallContactProblem::~WallContactProblem() = default;
+  template <int dim>
+  WallContactProblem<dim>::~WallContactProblem() = default;
 
+  template <int dim>
   void
-  WallContactProblem::enable_plasticity()
+  WallContactProblem<dim>::enable_plasticity()
   {
-    plasticity = std::make_unique<PlasticStrainField<2>>(
+    plasticity = std::make_unique<PlasticStrainField<dim>>(
       op, std::vector<Material>{parameters.material});
   }
 
+  template <int dim>
   void
-  WallContactProblem::set_load(const double new_load)
+  WallContactProblem<dim>::set_load(const double new_load)
   {
     // Uniform body force toward the wall, P in total on the whole body:
     // P / 2 on the half disk, P on a sphere's meridian (whose integrals
-    // are over the sphere), divided by the discrete area or volume so that
-    // the force applied is exactly that.
-    load = new_load;
+    // are over the sphere), P H / 4 on the quarter of a disk of thickness
+    // H, divided by the discrete area or volume so that the force applied
+    // is exactly that.
+    load       = new_load;
     body_force = 0.;
     op.assemble_body_force(-parameters.geometry.domain_share() * force(load) /
-                             op.volume() * parameters.contact.wall().normal,
+                             op.volume() * wall.normal,
                            body_force);
   }
 
+  template <int dim>
   double
-  WallContactProblem::get_load() const
+  WallContactProblem<dim>::get_load() const
   {
     return load;
   }
 
+  template <int dim>
   double
-  WallContactProblem::force(const double any_load) const
+  WallContactProblem<dim>::force(const double any_load) const
   {
     return any_load *
            theory->force_unit(parameters.material.in_plane_young_modulus(),
                               parameters.geometry.radius());
   }
 
+  template <int dim>
   unsigned int
-  WallContactProblem::n_dofs() const
+  WallContactProblem<dim>::n_dofs() const
   {
     return op.get_dof_handler().n_dofs();
   }
 
+  template <int dim>
   double
-  WallContactProblem::domain_share() const
+  WallContactProblem<dim>::domain_share() const
   {
     return parameters.geometry.domain_share();
   }
 
+  template <int dim>
   void
-  WallContactProblem::translate(const double compression)
+  WallContactProblem<dim>::translate(const double compression)
   {
-    const Tensor<1, 2> shift =
-      -compression * parameters.geometry.radius() *
-      parameters.contact.wall().normal;
+    const Tensor<1, dim> shift =
+      -compression * parameters.geometry.radius() * wall.normal;
+    std::vector<double> values(dim);
+    for (unsigned int d = 0; d < dim; ++d)
+      values[d] = shift[d];
     VectorTools::interpolate(op.get_mapping(),
                              op.get_dof_handler(),
-                             Functions::ConstantFunction<2>(
-                               std::vector<double>{shift[0], shift[1]}),
+                             Functions::ConstantFunction<dim>(values),
                              solution);
     op.get_constraints().distribute(solution);
   }
 
+  template <int dim>
   ContactState
-  WallContactProblem::add_support(
+  WallContactProblem<dim>::add_support(
     const PETScWrappers::MPI::Vector &u,
     PETScWrappers::MPI::Vector       &r,
     PETScWrappers::MPI::SparseMatrix *tangent) const
@@ -166,10 +180,11 @@ namespace DiskImpact
     return state;
   }
 
+  template <int dim>
   ContactState
-  WallContactProblem::residual(const PETScWrappers::MPI::Vector &u,
-                               PETScWrappers::MPI::Vector       &r,
-                               const bool                        with_tangent)
+  WallContactProblem<dim>::residual(const PETScWrappers::MPI::Vector &u,
+                                    PETScWrappers::MPI::Vector       &r,
+                                    const bool with_tangent)
   {
     op.stiffness_matrix().vmult(r, u);
     r -= body_force;
@@ -184,9 +199,10 @@ namespace DiskImpact
     return state;
   }
 
+  template <int dim>
   unsigned int
-  WallContactProblem::solve(const double       tolerance,
-                            const unsigned int max_iterations)
+  WallContactProblem<dim>::solve(const double       tolerance,
+                                 const unsigned int max_iterations)
   {
     PETScWrappers::MPI::Vector r       = op.create_vector(),
                                r_trial = op.create_vector(),
@@ -202,11 +218,13 @@ namespace DiskImpact
         // Newton step with the consistent tangent (residual() left it),
         // factorized as the impact's matrices are; its pattern stays, so
         // after the first step only the numeric factorization is redone.
+        // MUMPS on one rank too in 3D, where PETSc's own Cholesky is slow.
         if (!tangent)
           tangent = std::make_unique<Factorization>(
-            op.tangent_matrix(),
+            MatrixSum{{1., &op.tangent_matrix()}},
             communicator,
-            op.get_dof_handler().get_fe().n_components());
+            op.get_dof_handler().get_fe().n_components(),
+            dim == 3);
         else
           tangent->refactorize({{1., &op.tangent_matrix()}});
         r *= -1.;
@@ -257,43 +275,48 @@ namespace DiskImpact
       Utilities::to_string(r.l2_norm() / force_scale) + ")");
   }
 
+  template <int dim>
   double
-  WallContactProblem::accept()
+  WallContactProblem<dim>::accept()
   {
     // The trial states and f_p are those of solve()'s last residual, at
     // the solution.
     return plasticity ? plasticity->accept() / domain_share() : 0.;
   }
 
+  template <int dim>
   std::pair<double, double>
-  WallContactProblem::approach() const
+  WallContactProblem<dim>::approach() const
   {
-    const auto        &geometry = parameters.geometry;
-    const RigidWall<2> wall     = parameters.contact.wall();
-    const double       R        = geometry.radius();
-    const auto         u        = op.create_ghosted(solution);
-    const Tensor<1, 2> u_contact =
-      op.vertex_displacement(u, geometry.center() - R * wall.normal);
-    const Tensor<1, 2> u_far =
-      op.vertex_displacement(u, geometry.center() + R * wall.normal);
+    const auto          &geometry = parameters.geometry;
+    const double         R        = geometry.radius();
+    const Point<dim>     center   = embedded<dim>(geometry.center());
+    const auto           u        = op.create_ghosted(solution);
+    const Tensor<1, dim> u_contact =
+      op.vertex_displacement(u, center - R * wall.normal);
+    const Tensor<1, dim> u_far =
+      op.vertex_displacement(u, center + R * wall.normal);
     return {-(op.mean_displacement(u) * wall.normal) / R,
             ((u_contact - u_far) * wall.normal) / R};
   }
 
+  template <int dim>
   const PETScWrappers::MPI::Vector &
-  WallContactProblem::displacement() const
+  WallContactProblem<dim>::displacement() const
   {
     return solution;
   }
 
+  template <int dim>
   const PETScWrappers::MPI::Vector &
-  WallContactProblem::body_force_vector() const
+  WallContactProblem<dim>::body_force_vector() const
   {
     return body_force;
   }
 
+  template <int dim>
   PETScWrappers::MPI::Vector
-  WallContactProblem::support_force_vector() const
+  WallContactProblem<dim>::support_force_vector() const
   {
     PETScWrappers::MPI::Vector force = op.create_vector();
     add_support(solution, force, nullptr);
@@ -301,16 +324,18 @@ namespace DiskImpact
     return force;
   }
 
+  template <int dim>
   ContactState
-  WallContactProblem::contact_state() const
+  WallContactProblem<dim>::contact_state() const
   {
     if (load == 0.)
       return {};
     return contact->assemble(op.create_ghosted(solution), nullptr, nullptr);
   }
 
+  template <int dim>
   double
-  WallContactProblem::elastic_energy() const
+  WallContactProblem<dim>::elastic_energy() const
   {
     // The condensed K's rows of constrained DoFs are not the energy's:
     // their entries are left out.
@@ -323,64 +348,69 @@ namespace DiskImpact
     return elastic / domain_share();
   }
 
+  template <int dim>
   double
-  WallContactProblem::largest_plastic_strain() const
+  WallContactProblem<dim>::largest_plastic_strain() const
   {
     return plasticity ? plasticity->largest_equivalent_plastic_strain() : 0.;
   }
 
+  template <int dim>
   ContactLawPoint
-  WallContactProblem::results() const
+  WallContactProblem<dim>::results() const
   {
-    const auto        &geometry = parameters.geometry;
-    const RigidWall<2> wall     = parameters.contact.wall();
-    const double       R        = geometry.radius();
-    const auto         u        = op.create_ghosted(solution);
-    const ContactState state    = contact_state();
+    const double       R     = parameters.geometry.radius();
+    const ContactState state = contact_state();
 
     ContactLawPoint point;
-    point.load                                  = load;
+    point.load                                      = load;
     std::tie(point.delta_com, point.delta_diameter) = approach();
-    point.half_width        = state.half_width() / R;
-    point.penetration       = state.max_penetration / R;
-    point.force_balance =
-      state.force / (domain_share() * force(load)) - 1.;
+    point.half_width                                = state.half_width() / R;
+    point.penetration                               = state.max_penetration / R;
+    point.force_balance     = state.force / (domain_share() * force(load)) - 1.;
     point.h_contact         = h_contact / R;
     point.n_dofs            = n_dofs();
     point.newton_iterations = iterations;
 
     // Where the body first yields: the largest von Mises stress against
     // Hertz's p0 and a.
-    const StressPeak   peak          = largest_von_mises(op.get_mapping(),
-                                              op.get_dof_handler(),
-                                              {parameters.material},
-                                              u);
-    const double       a             = theory->half_width(load) * R;
-    const Point<2>     contact_point = geometry.center() - R * wall.normal;
-    const Tensor<1, 2> offset        = peak.location - contact_point;
-    const double       depth         = offset * wall.normal;
-    point.von_mises_max =
-      peak.von_mises / (theory->pressure(0., load) * pressure_unit());
-    point.von_mises_depth  = depth / a;
-    point.von_mises_offset = (offset - depth * wall.normal).norm() / a;
+    if constexpr (dim == 2)
+      {
+        const auto        &geometry      = parameters.geometry;
+        const StressPeak   peak          = largest_von_mises(op.get_mapping(),
+                                                  op.get_dof_handler(),
+                                                  {parameters.material},
+                                                  op.create_ghosted(solution));
+        const double       a             = theory->half_width(load) * R;
+        const Point<2>     contact_point = geometry.center() - R * wall.normal;
+        const Tensor<1, 2> offset        = peak.location - contact_point;
+        const double       depth         = offset * wall.normal;
+        point.von_mises_max =
+          peak.von_mises / (theory->pressure(0., load) * pressure_unit());
+        point.von_mises_depth  = depth / a;
+        point.von_mises_offset = (offset - depth * wall.normal).norm() / a;
+      }
     return point;
   }
 
+  template <int dim>
   std::vector<std::pair<double, double>>
-  WallContactProblem::pressure_profile() const
+  WallContactProblem<dim>::pressure_profile() const
   {
     return contact->pressure_profile(op.create_ghosted(solution));
   }
 
+  template <int dim>
   double
-  WallContactProblem::pressure_unit() const
+  WallContactProblem<dim>::pressure_unit() const
   {
     return theory->pressure_unit(force(load), parameters.geometry.radius());
   }
 
+  template <int dim>
   std::string
-  WallContactProblem::write_state(const std::string &directory,
-                                  const unsigned int index) const
+  WallContactProblem<dim>::write_state(const std::string &directory,
+                                       const unsigned int index) const
   {
     std::vector<CellField> cell_fields;
     if (plasticity)
@@ -395,4 +425,6 @@ namespace DiskImpact
                                 nullptr,
                                 plasticity ? &cell_fields : nullptr);
   }
+  template class WallContactProblem<2>;
+  template class WallContactProblem<3>;
 } // namespace DiskImpact

@@ -30,7 +30,9 @@ namespace DiskImpact
 
   /**
    * A half disk or a sphere pressed on the wall by a uniform body force of
-   * total P (Gerl & Zippelius 1999, section 5), solved by Newton's method
+   * total P (Gerl & Zippelius 1999, section 5), in two dimensions (the
+   * plane models, the sphere's meridian) or three (the quarter of a disk
+   * of finite thickness, the quarter sphere), solved by Newton's method
    * with a line search on the penalty contact problem: the state of task
    * 'quasistatic contact' at one load, or one step of a loading path.
    *
@@ -43,6 +45,7 @@ namespace DiskImpact
    * does (the force f_p of the residual stresses is self-equilibrated, so
    * the hold carries no force).
    */
+  template <int dim>
   class WallContactProblem
   {
   public:
@@ -77,11 +80,13 @@ namespace DiskImpact
     double
     accept();
 
-    /// The contact law's point at the current load (an elastic body).
+    /// The contact law's point at the current load (an elastic body; in
+    /// 3D without the first yield's stress).
     ContactLawPoint
     results() const;
     /// Approach of the centre of mass and shortening of the axial diameter
-    /// (both over R), as in results().
+    /// (both over R; in 3D the diameter in the plane z = 0), as in
+    /// results().
     std::pair<double, double>
     approach() const;
     const dealii::PETScWrappers::MPI::Vector &
@@ -142,10 +147,11 @@ namespace DiskImpact
     double                                              load;
     const std::unique_ptr<Reference::WallContactTheory> theory;
     MPI_Comm                                            communicator;
-    dealii::parallel::distributed::Triangulation<2>     triangulation;
-    ElasticityOperator<2>                               op;
-    std::unique_ptr<ContactOperator>                    contact;
-    std::unique_ptr<PlasticStrainField<2>>              plasticity;
+    dealii::parallel::distributed::Triangulation<dim>   triangulation;
+    ElasticityOperator<dim>                             op;
+    RigidWall<dim>                                      wall;
+    std::unique_ptr<ContactOperator<dim>>               contact;
+    std::unique_ptr<PlasticStrainField<dim>>            plasticity;
     dealii::PETScWrappers::MPI::Vector                  body_force;
     dealii::PETScWrappers::MPI::Vector                  plastic_force;
     dealii::PETScWrappers::MPI::Vector                  solution;

@@ -366,6 +366,20 @@ namespace DiskImpact
     return coarser;
   }
 
+  ImpactParameters
+  ImpactParameters::with_mesh_graded_for(const double       half_width,
+                                         const unsigned int elements,
+                                         const double       grading,
+                                         const bool conforming_mesh) const
+  {
+    ImpactParameters graded = *this;
+    graded.fixed_half_width = half_width;
+    graded.contact_elements = elements;
+    graded.mesh_grading     = grading;
+    graded.conforming       = conforming_mesh;
+    return graded;
+  }
+
   double
   ImpactParameters::fixed_law_constant(const double nu2,
                                        const bool   sphere) const

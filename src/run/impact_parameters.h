@@ -88,6 +88,14 @@ namespace DiskImpact
     /// twice the grading ('Graded mesh = conforming' halves it again).
     ImpactParameters
     with_mesh_coarsened() const;
+    /// The mesh graded for the half-width @p half_width (over R) with
+    /// @p elements across it and @p grading, conforming if @p conforming
+    /// (a mesh made for a load instead of an impact).
+    ImpactParameters
+    with_mesh_graded_for(double       half_width,
+                         unsigned int elements,
+                         double       grading,
+                         bool         conforming) const;
 
     /// 'Elements across contact', 'Grading', 'Fine zone radius' and
     /// 'Graded half-width' (0: Hertz's half-width at the largest force).

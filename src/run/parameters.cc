@@ -105,11 +105,17 @@ namespace DiskImpact
   {
     geometry.parse_parameters(prm, !task().traits.modal);
     material.parse_parameters(prm);
-    require(geometry.dimension() == 2 || task().traits.three_dimensional,
-            "Geometry: 'Dimension = 3' is computed by the tasks 'modal "
-            "analysis', 'impact', 'impact convergence' and 'sweep' so far; "
-            "task '" +
-              run.task + "' takes 'Dimension = 2'");
+    if (geometry.dimension() == 3 && !task().traits.three_dimensional)
+      {
+        std::string names;
+        for (const auto &entry : Tasks::all())
+          if (entry.traits.three_dimensional)
+            names += (names.empty() ? "'" : ", '") + entry.name + "'";
+        throw InputError("Geometry: 'Dimension = 3' is computed by the "
+                         "tasks " +
+                         names + " so far; task '" + run.task +
+                         "' takes 'Dimension = 2'");
+      }
     require(geometry.dimension() == 2 || !geometry.has_symmetry_plane_z() ||
               !task().traits.modal || geometry.body() == Body::disk,
             "Geometry: a quarter or half sphere holds only the modes "

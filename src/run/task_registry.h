@@ -105,6 +105,28 @@ namespace DiskImpact
     };
   }
 
+  /**
+   * Give @p task its largest meshes in two and three dimensions: those its
+   * own parameters (add_own_parameters<Own>()) build with
+   * Own::create_mesh(parameters, load, mesh, max_cells) for
+   * Own::largest_load(). Call where Parameters is complete.
+   */
+  template <typename Own>
+  void
+  build_meshes_for_largest_load(TaskEntry &task)
+  {
+    const auto build =
+      [](const auto &parameters, auto &mesh, const auto &cell_budget) {
+        const auto &own = parameters.template task_parameters<Own>();
+        own.create_mesh(parameters,
+                        own.largest_load(),
+                        mesh,
+                        cell_budget(parameters.finite_element.degree));
+      };
+    task.build_largest_mesh       = build;
+    task.build_largest_solid_mesh = build;
+  }
+
   /// The registry of tasks, by name.
   namespace Tasks
   {

@@ -41,16 +41,7 @@ namespace DiskImpact
                 "Task 'tangential contact' needs 'Friction coefficient' > 0 "
                 "in subsection Contact");
       };
-      const auto build =
-        [](const Parameters &parameters, auto &mesh, const auto &cell_budget) {
-          const auto &own = parameters.task_parameters<TangentialContact>();
-          own.create_mesh(parameters,
-                          own.largest_load(),
-                          mesh,
-                          cell_budget(parameters.finite_element.degree));
-        };
-      task.build_largest_mesh       = build;
-      task.build_largest_solid_mesh = build;
+      build_meshes_for_largest_load<TangentialContact>(task);
       return task;
     }
   } // namespace

@@ -188,7 +188,7 @@ TEST_CASE("contact tangent is the derivative of the contact residual",
                        dealii::Tensor<1, 2>({1., 0.})};
   // Both laws; the exponential one smooth, the penalty piecewise linear.
   const auto            law = GENERATE(penalty(1e3), exponential());
-  const ContactOperator contact(op, wall, law, geometry.center());
+  const ContactOperator<2> contact(op, wall, law, geometry.center());
 
   // A state that penetrates the wall over part of the edge, and a direction.
   auto state = op.create_vector(), direction = op.create_vector();

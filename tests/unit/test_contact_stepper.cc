@@ -72,9 +72,8 @@ namespace
       ContactParameters::declare_parameters(prm);
       ContactParameters contact;
       contact.parse_parameters(prm);
-      law    = contact.law({material.in_plane_young_modulus(),
-                            ContactOperator::smallest_edge_face(op),
-                            1.});
+      law = contact.law(
+        {material.in_plane_young_modulus(), smallest_edge_face(op), 1.});
       wall   = contact.wall();
       center = geometry.center();
 

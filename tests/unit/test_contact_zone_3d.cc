@@ -63,7 +63,7 @@ namespace
     {
       std::shared_ptr<const ContactLaw> law;
       if (!nodal)
-        law = contact.law({1., ContactOperator::smallest_edge_face(op), 1.});
+        law = contact.law({1., smallest_edge_face(op), 1.});
       return ContactZone(op,
                          contact.wall<3>(),
                          law,

@@ -51,9 +51,8 @@ namespace
       ContactParameters::declare_parameters(prm);
       ContactParameters contact;
       contact.parse_parameters(prm);
-      const auto law = contact.law({material.in_plane_young_modulus(),
-                                    ContactOperator::smallest_edge_face(op),
-                                    1.});
+      const auto law = contact.law(
+        {material.in_plane_young_modulus(), smallest_edge_face(op), 1.});
       zone =
         std::make_unique<ContactZone>(op, contact.wall(), law, center, 0.1);
       zone->enable_friction(mu);
