@@ -443,6 +443,7 @@ namespace DiskImpact
       task.traits.sweeps  = true;
       task.traits.plasticity = true;
       task.traits.one_mesh_per_rank = true;
+      task.traits.three_dimensional = true;
       task.result_files             = sweep_result_files();
       task.result_files.insert(task.result_files.end(),
                                {"restitution_law.csv", "restitution_law.json"});
@@ -453,8 +454,9 @@ namespace DiskImpact
                                                          resume,
                                                          communicator);
       };
-      task.check              = check_sweep;
-      task.build_largest_mesh = build_fastest_mesh<2>;
+      task.check                    = check_sweep;
+      task.build_largest_mesh       = build_fastest_mesh<2>;
+      task.build_largest_solid_mesh = build_fastest_mesh<3>;
       add_own_parameters<RestitutionLaw>(task);
       return task;
     }
