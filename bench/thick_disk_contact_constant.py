@@ -82,12 +82,15 @@ def constants(work, name, thickness, loads, elements, grading, args):
         open(prm).read() == text
     seconds = 0.
     if not finished:
+        if os.path.exists(table):      # another parameter file's result
+            os.remove(table)
         with open(prm, "w") as f:
             f.write(text)
         seconds = run_diskimpact(prm, args.ranks)
     with open(table) as f:
         rows = list(csv.DictReader(f))
-    return [float(r["C_com"]) for r in rows], int(rows[0]["n_dofs"]), seconds
+    return ([float(r["C_com"]) for r in rows], [int(r["n_dofs"]) for r in rows],
+            seconds)
 
 
 def main():
@@ -115,7 +118,7 @@ def main():
     print(f"plane-strain constant C = -2 ln 2 - (1 + nu2)/4 = "
           f"{plane_strain:.6f} (nu = {nu}); work in {work}")
     print(" H/R  mesh   a/R      C_3D       C_2D    C_3D-C_2D     DoFs 3D"
-          "   time [s]")
+          "   time [s] (the 3D run, both loads)")
     table = []
     for H in args.thickness:
         a1 = min(0.1 * H, 0.02)
@@ -127,9 +130,9 @@ def main():
             c3, dofs, t3 = constants(work, "disk_" + tag, H, loads, n, g, args)
             c2, _, _ = constants(work, "section_" + tag, 0, loads, n, g, args)
             differences = [x - y for x, y in zip(c3, c2)]
-            for a, x, y, d in zip(widths, c3, c2, differences):
+            for a, x, y, d, m in zip(widths, c3, c2, differences, dofs):
                 print(f"{H:4g}  {n}/{g:<4g} {a:.4f}  {x:9.5f}  {y:9.5f}  "
-                      f"{d:9.5f}  {dofs:9d}  {t3:8.0f}", flush=True)
+                      f"{d:9.5f}  {m:9d}  {t3:8.0f}", flush=True)
             limits.append((2. * differences[1] - differences[0],
                            abs(differences[1] - differences[0])))
         difference, extrapolation = limits[-1]
