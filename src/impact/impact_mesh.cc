@@ -89,19 +89,21 @@ namespace DiskImpact
     }
 
     /// The planes z of a disk's layers, graded toward its faces like the
-    /// section toward the contact: from the mid-plane to the face for the
-    /// quarter, mirrored for the whole disk.
+    /// section toward the contact (with 'Layer refinement' k, like a
+    /// section refined k more times: every size over 2^k): from the
+    /// mid-plane to the face for the quarter, mirrored for the whole disk.
     std::vector<double>
     layer_planes(const Parameters &parameters, const double largest)
     {
       const auto  &impact = parameters.impact;
       const double a      = graded_width(parameters);
+      const double scale  = std::pow(0.5, impact.layer_refinement());
       const std::vector<double> half =
         layers_graded_toward_face(0.5 * parameters.geometry.thickness(),
-                                  a / impact.elements_across_contact(),
-                                  impact.grading(),
+                                  scale * a / impact.elements_across_contact(),
+                                  scale * impact.grading(),
                                   impact.fine_zone_radius() * a,
-                                  largest);
+                                  scale * largest);
       std::vector<double> z;
       if (!parameters.geometry.has_symmetry_boundary())
         for (auto it = half.rbegin(); it + 1 != half.rend(); ++it)

@@ -116,6 +116,21 @@ namespace DiskImpact
                       "long in z: far fewer cells at low speeds. One body "
                       "against the wall, a disk or the sphere's meridian; "
                       "'Elements across contact' even.");
+    prm.declare_entry("Layer refinement",
+                      "0",
+                      Patterns::Integer(-2, 2),
+                      "A disk in 3D with 'Graded mesh = conforming': its "
+                      "layers through the thickness graded as for a section "
+                      "refined this many times more (2^k times the elements "
+                      "across, the grading and the largest layer over 2^k; "
+                      "k < 0 coarser), the section unchanged. A convergence "
+                      "level whose whole refinement exceeds the memory can "
+                      "so be run in two parts: the section and the time step "
+                      "refined (one level more in 'Global refinements', "
+                      "'Elements across contact', 'Grading' and 'Time step "
+                      "fraction') with k = -1, and the layers alone, k = 1 "
+                      "(bench/free_disk_restitution.sh) [-]; 0: the "
+                      "section's.");
     prm.declare_entry("Graded half-width",
                       "0",
                       Patterns::Double(0., 1.),
@@ -236,6 +251,7 @@ namespace DiskImpact
     fine_zone              = prm.get_double("Fine zone radius");
     fixed_half_width       = prm.get_double("Graded half-width");
     conforming             = prm.get("Graded mesh") == "conforming";
+    layer_levels           = prm.get_integer("Layer refinement");
     law_constant           = prm.get("One-DOF law constant");
     margin                 = prm.get_double("Time after contact");
     output_interval        = prm.get_integer("Output interval");

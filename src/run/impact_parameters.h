@@ -127,6 +127,14 @@ namespace DiskImpact
       return conforming;
     }
 
+    /// 'Layer refinement': how many times more a disk's layers in 3D are
+    /// refined than its section (negative: coarser).
+    int
+    layer_refinement() const
+    {
+      return layer_levels;
+    }
+
     /// Whether 'One-DOF law constant = finite size' (a sphere's derived D).
     bool
     finite_size_law_constant() const
@@ -181,6 +189,7 @@ namespace DiskImpact
     double              fine_zone           = default_fine_zone_radius;
     double              fixed_half_width    = 0.;
     bool                conforming          = false;
+    int                 layer_levels        = 0;
     std::string         law_constant        = "exact";
     double              margin              = 0.2;
     unsigned int        output_interval     = 20;

@@ -149,6 +149,11 @@ namespace DiskImpact
             "Impact: 'Graded mesh = conforming' takes one body against the "
             "wall, a disk or the sphere's meridian (the sphere in 3D is "
             "refined with hanging nodes)");
+    require(impact.layer_refinement() == 0 ||
+              (geometry.dimension() == 3 && !geometry.is_sphere() &&
+               impact.conforming_mesh()),
+            "Impact: 'Layer refinement' grades the layers of a disk in 3D "
+            "on 'Graded mesh = conforming'; set it to 0 here");
     impact_convergence.parse_parameters(prm);
     // Every task's own subsection is checked; the chosen task's is kept.
     for (const auto &entry : Tasks::all())

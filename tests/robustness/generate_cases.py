@@ -400,6 +400,7 @@ NUMERIC_ENTRIES = [
     ("Impact/Elements across contact", "int", "impact", None),
     ("Impact/Grading", "double", "impact", None),
     ("Impact/Graded half-width", "double", "impact", None),
+    ("Impact/Layer refinement", "int", "impact", None),
     ("Impact/One-DOF law constant", "double", "impact", None),
     ("Impact/Output interval", "int", "impact", None),
     ("Impact/Number of projected modes", "int", "impact", None),
@@ -574,6 +575,8 @@ OUT_OF_RANGE = [
     ("Impact/Elements across contact", "1001", "impact", "above 1000", {}),
     ("Impact/Grading", "0", "impact", "zero", {}),
     ("Impact/Grading", "2", "impact", "above 1", {}),
+    ("Impact/Layer refinement", "-3", "impact", "below -2", {}),
+    ("Impact/Layer refinement", "3", "impact", "above 2", {}),
     ("Impact/Graded half-width", "-0.1", "impact", "negative", {}),
     ("Impact/Graded half-width", "1.5", "impact", "above 1 (the radius)", {}),
     ("Impact/One-DOF law constant", "fitted", "impact",
@@ -663,6 +666,8 @@ def range_cases():
 
 # (name, base, settings, expected, what is wrong).
 COMBINATIONS = [
+    ("layers_2d", "impact", {"Impact/Layer refinement": "1"},
+     "Layer refinement", "'Layer refinement' of a disk in 2D (only a 3D disk has layers)"),
     ("quasistatic_full_disk", "quasistatic", {"Geometry/Domain": "full disk"},
      "Domain", "task 'quasistatic contact' with 'Domain = full disk'"),
     ("quasistatic_exponential", "quasistatic", {"Contact/Law": "exponential"},

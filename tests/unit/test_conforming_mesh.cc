@@ -4,12 +4,19 @@
 #include "body/conforming_mesh.h"
 #include "body/geometry.h"
 #include "half_disk.h"
+#include "impact/impact_mesh.h"
+#include "run/parameters.h"
+
+#include <deal.II/base/parameter_handler.h>
 
 #include <deal.II/grid/tria.h>
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <set>
+#include <string>
+#include <utility>
 
 using namespace DiskImpact;
 
@@ -133,4 +140,67 @@ TEST_CASE("the layers thicken away from the face as the grading says",
           Approx(unscaled[i] * height / total).epsilon(1e-12));
   CHECK(total >= height);
   CHECK(total < height + largest);
+}
+
+namespace
+{
+  /// The impact mesh of the quarter of a free disk (H = R, v = 0.1c) in 3D
+  /// on the conforming mesh: 'Global refinements', 'Elements across
+  /// contact', 'Grading' of @p level (4 across, grading 0.6 at 0, each
+  /// level halving) and 'Layer refinement' @p layers.
+  dealii::Triangulation<3>
+  thick_disk_mesh(const unsigned int level, const int layers)
+  {
+    dealii::ParameterHandler prm;
+    Parameters::declare_parameters(prm);
+    prm.parse_input_from_string(
+      "set Task = impact\n"
+      "subsection Geometry\n"
+      "  set Dimension = 3\n"
+      "  set Thickness = 1\n"
+      "  set Faces = free\n"
+      "  set Global refinements = " +
+      std::to_string(level) +
+      "\n"
+      "end\n"
+      "subsection Impact\n"
+      "  set Velocity = 0.1\n"
+      "  set Graded mesh = conforming\n"
+      "  set Elements across contact = " +
+      std::to_string(4 << level) +
+      "\n  set Grading = " + std::to_string(0.6 / (1 << level)) +
+      "\n  set Layer refinement = " + std::to_string(layers) + "\nend\n");
+    Parameters parameters;
+    parameters.parse_parameters(prm);
+    dealii::Triangulation<3> mesh;
+    create_impact_mesh(parameters, mesh);
+    return mesh;
+  }
+
+  /// The planes z of a mesh's vertices and its cells per layer.
+  std::pair<std::set<double>, unsigned int>
+  layers_and_section(const dealii::Triangulation<3> &mesh)
+  {
+    std::set<double> z;
+    for (const auto &vertex : mesh.get_vertices())
+      z.insert(std::round(vertex[2] * 1e10) / 1e10);
+    return {z, mesh.n_active_cells() / (z.size() - 1)};
+  }
+} // namespace
+
+TEST_CASE("a disk's section and its layers refine apart", "[geometry]")
+{
+  // The mesh of the next level in parts: its section with the layers of
+  // this level (Layer refinement -1), and this level's section with the
+  // next level's layers (+1).
+  const auto base          = layers_and_section(thick_disk_mesh(0, 0));
+  const auto next          = layers_and_section(thick_disk_mesh(1, 0));
+  const auto section_alone = layers_and_section(thick_disk_mesh(1, -1));
+  const auto layers_alone  = layers_and_section(thick_disk_mesh(0, 1));
+  REQUIRE(next.first.size() > base.first.size());
+  REQUIRE(next.second > base.second);
+  CHECK(section_alone.first == base.first);
+  CHECK(section_alone.second == next.second);
+  CHECK(layers_alone.first == next.first);
+  CHECK(layers_alone.second == base.second);
 }
