@@ -196,7 +196,8 @@ for row in rows:
               f"{row['memory_mb']} MB, {row['seconds']:.0f} s")
 if parts:
     # level 1 in parts against the whole level 1, where that ran
-    print("\n| v/c | H/R | level 0 ± bar (parts) | level 1 ± bar | |d| | |d_s| + |d_z| |")
+    print("\n| v/c | H/R | level 0 ± bar (parts) | level 1 ± bar | \\|d\\| "
+          "| \\|d_s\\| + \\|d_z\\| |")
     print("|---|---|---|---|---|---|")
     for v in speeds:
         for h in thicknesses:

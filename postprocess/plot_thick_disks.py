@@ -31,8 +31,10 @@ value = {(r["model"], r["v"]): r for r in rows}
 stress = {v: value[("plane stress", v)] for v in speeds}
 
 def shown(r):
-    return (f"{r['epsilon']:.6f} ± {r['bar']:.1e}" if not math.isnan(r["bar"])
-            else f"{r['epsilon']:.6f} (level 0)")
+    if math.isnan(r["bar"]):
+        return f"{r['epsilon']:.6f} (level 0)"
+    return (f"{r['epsilon']:.6f} ± {r['bar']:.1e}"
+            + (" (parts)" if r.get("how") == "parts" else ""))
 
 
 print("| v/c | " + " | ".join(models) + " |")
