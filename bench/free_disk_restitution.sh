@@ -146,24 +146,23 @@ PARTS = ("section", "layers")
 def read(path):
     with open(path, newline="") as f:
         return list(csv.DictReader(f))
+def cost(name):
+    """Peak memory [MB] and wall time [s] of run NAME."""
+    log = open(f"{work}/{name}.log").read()
+    return (float(re.search(r"peak memory ([0-9.]+)", log).group(1)),
+            int(open(f"{work}/{name}.ms").read()) / 1000)
 def single(name):
     """epsilon, DoFs, peak memory [MB] and wall time [s] of one impact."""
-    log = open(f"{work}/{name}.log").read()
     summary = read(f"{work}/{name}/summary.csv")[0]
-    return (float(summary["epsilon"]), int(summary["n_dofs"]),
-            float(re.search(r"peak memory ([0-9.]+)", log).group(1)),
-            int(open(f"{work}/{name}.ms").read()) / 1000)
+    return (float(summary["epsilon"]), int(summary["n_dofs"]), *cost(name))
 def estimate(name):
     """epsilon, bar, finest DoFs, peak memory, seconds and how: 'study'
     (two levels), 'parts' (level 1 in parts) or 'level 0' (no bar)."""
-    log = open(f"{work}/{name}.log").read()
-    if "Convergence study" in log:
+    if "Convergence study" in open(f"{work}/{name}.log").read():
         total = [r for r in read(f"{work}/{name}/epsilon_estimate.csv") if r["factor"] == "total"][0]
         runs = read(f"{work}/{name}/impact_convergence.csv")
-        memory = float(re.search(r"peak memory ([0-9.]+)", log).group(1))
-        seconds = int(open(f"{work}/{name}.ms").read()) / 1000
         return (float(total["limit"]), float(total["error"]),
-                max(int(r["n_dofs"]) for r in runs), memory, seconds, "study")
+                max(int(r["n_dofs"]) for r in runs), *cost(name), "study")
     epsilon, dofs, memory, seconds = single(name)
     names = [f"{name}_{part}" for part in PARTS]
     if not all(os.path.exists(f"{work}/{n}.ms") for n in names):
