@@ -33,7 +33,9 @@
 #            [--speeds "0.003 0.01 0.03 0.1 0.3"] [--csv FILE] [--work DIR]
 #            [--parts]
 #        (build first; --work keeps the runs in DIR, else a temporary
-#        directory is removed)
+#        directory is removed; run again with the same DIR, the bench
+#        reuses every run there that finished with the same parameters,
+#        so a killed bench resumes where it stopped)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 thicknesses="0.1 0.25 0.5 1 2"
@@ -74,7 +76,7 @@ study() {  # study NAME V MODEL LEVELS [H] [RANKS] [PART]: one convergence
   set Faces = free"
   [ "$model" = "plane stress" ] ||
     v=$(awk "BEGIN { printf \"%.10g\", $v * sqrt(1 - 0.3 * 0.3) }")
-  cat > "$work/$name.prm" <<PRM
+  cat > "$work/$name.prm.new" <<PRM
 set Task             = $([ "$levels" = 1 ] && echo impact || echo impact convergence)
 set Output directory = $work/$name
 subsection Geometry
@@ -106,6 +108,15 @@ subsection Impact convergence
   set Mesh levels = $levels
 end
 PRM
+  # a run that finished with these parameters (its wall time written) is
+  # kept, any other one is run afresh
+  if [ -f "$work/$name.ms" ] && cmp -s "$work/$name.prm.new" "$work/$name.prm"; then
+    rm "$work/$name.prm.new"
+    echo "free_disk_restitution.sh: $name done before, kept" >&2
+    return 0
+  fi
+  mv "$work/$name.prm.new" "$work/$name.prm"
+  rm -f "$work/$name.ms"
   local start
   start=$(date +%s%N)
   mpirun -np "$ranks" build/diskimpact "$work/$name.prm" > "$work/$name.log" 2>&1 ||
