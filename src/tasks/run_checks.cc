@@ -56,11 +56,13 @@ namespace DiskImpact
     /// (6.8k DoFs), 55 kB with Q5 (13k), 86 kB with Q6 (22k), 40 kB with Q4
     /// on 8 times the cells (52k); on task 'impact' of the quarter sphere
     /// (Q2, MUMPS): 19 kB per DoF at 132k DoFs on one rank, 25 kB at 156k
-    /// on two; of a free disk (two ranks), whose contact line along z
-    /// fills more: 34 kB at 63k DoFs (H = R, v = 0.03c), 32 kB at 181k
-    /// (H = 0.05R, 0.1c).
+    /// on two; of a free disk, whose contact line along z fills more:
+    /// 34 kB at 63k DoFs (H = R, v = 0.03c, two ranks), 32 kB at 181k
+    /// (H = 0.05R, 0.1c, two ranks), 34 kB at 229k (H = 2R, 0.003c, one
+    /// rank), 27 kB at 527k and 34 kB at 418k (the same disk with its
+    /// section and with its layers refined, one rank).
     constexpr double solid_modal_bytes_per_dof  = 90e3;
-    constexpr double solid_impact_bytes_per_dof = 45e3;
+    constexpr double solid_impact_bytes_per_dof = 40e3;
 
     /// The same for a three-dimensional mesh: 3 k^3 DoFs per cell.
     double
