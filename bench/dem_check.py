@@ -15,12 +15,18 @@ wall) with bench/dem_collision.py:
   LIGGGHTS, dem/liggghts_thornton.txt (for a plastic sphere: Thornton's
             elastic-plastic model thornton_ning with the fitted yield ratio)
             at every speed of the table, against the model's epsilon
-            (restitution_law.csv, epsilon_thornton_fit).
+            (restitution_law.csv, epsilon_thornton_fit);
+  Yade,     dem/yade_luding.py (for a plastic sphere: Luding's
+            elastic-plastic LudingMat with the fitted kp / k1 and plasticity
+            depth) likewise against epsilon_luding_fit, if yade is
+            installed.
 Prints epsilon and the contact time of the DEM code beside diskimpact's,
 and fails (exit 1) unless LIGGGHTS (and Yade, where it ran) reproduces
-epsilon at the reference speed within --tolerance (1e-3), and LIGGGHTS'
-thornton_ning the fitted model's epsilon at every speed within --tolerance
-and, extrapolated from two time steps, within 1e-5.
+epsilon at the reference speed within --tolerance (1e-3), and each
+elastic-plastic contact the fitted model's epsilon at every speed within
+--tolerance and, extrapolated from two time steps, within 1e-5. (Their
+contact times count the flight to zero overlap that the plastic overlap
+leaves after the force vanishes, unlike the finite elements'.)
 
 For a disk (the law's DEM inputs are 2D, dem/lammps_2d.txt) the collisions
 run in LAMMPS with 'dimension 2' at every speed of the table (the linear
@@ -85,10 +91,14 @@ def main():
     table = [(float(r["speed_si"]), float(r["epsilon"]),
               float(r["contact_time_si"])) for r in rows]
     table.sort()
-    # A plastic sphere's Thornton model, with its own epsilon at each speed.
-    thornton = sorted((float(r["speed_si"]), float(r["epsilon_thornton_fit"]),
-                       float(r["contact_time_si"]))
-                      for r in rows if "epsilon_thornton_fit" in r)
+    # A plastic sphere's Thornton and Luding models, with their own epsilon
+    # at each speed.
+    thornton, luding = ([(float(r["speed_si"]), float(r[column]),
+                          float(r["contact_time_si"]))
+                         for r in sorted(rows, key=lambda r: float(r["speed_si"]))
+                         if column in r]
+                        for column in ("epsilon_thornton_fit",
+                                       "epsilon_luding_fit"))
 
     def run(code, snippet_name, speeds):
         snippet = open(os.path.join(args.directory, "dem",
@@ -134,44 +144,55 @@ def main():
     if failed:
         sys.exit("dem_check: a DEM code misses epsilon at the reference speed")
     if thornton:
-        thornton_check(args, law, thornton, radius, density, run)
+        dem = law["dem"]
+        print(f"Thornton's model fitted: p_y = "
+              f"{dem['limiting_pressure_si']:.6g} Pa, yield ratio "
+              f"{dem['liggghts_thornton_ning_yield_ratio']:.6g}, v_y = "
+              f"{dem['thornton_yield_speed_si']:.6g} m/s, largest residual "
+              f"against the FE {law['thornton_fit']['max_residual']:.3g}")
+        plastic_check(args, "liggghts", "liggghts_thornton.txt", thornton,
+                      radius, density, run)
+        if shutil.which("yade"):
+            print(f"Luding's model fitted: kp / k1 = "
+                  f"{law['luding_fit']['stiffness_ratio']:.6g}, v_p = "
+                  f"{dem['luding_plastic_speed_si']:.6g} m/s, largest "
+                  f"residual against the FE "
+                  f"{law['luding_fit']['max_residual']:.3g}")
+            plastic_check(args, "yade", "yade_luding.py", luding, radius,
+                          density, run)
 
 
-def thornton_check(args, law, thornton, radius, density, run):
-    """LIGGGHTS' thornton_ning with the exported yield ratio against the
-    fitted model's epsilon at every speed (the 'eps diskimpact' column is
-    the model's here); exits 1 if a speed misses it by more than the
-    tolerance."""
-    print(f"Thornton's model fitted: p_y = "
-          f"{law['dem']['limiting_pressure_si']:.6g} Pa, yield ratio "
-          f"{law['dem']['liggghts_thornton_ning_yield_ratio']:.6g}, v_y = "
-          f"{law['dem']['thornton_yield_speed_si']:.6g} m/s, largest "
-          f"residual against the FE {law['thornton_fit']['max_residual']:.3g}")
+def plastic_check(args, code, snippet_name, model, radius, density, run):
+    """A code's elastic-plastic contact (LIGGGHTS' thornton_ning, Yade's
+    LudingMat) with the exported inputs against the fitted model's epsilon
+    at every speed (the 'eps diskimpact' column is the model's here);
+    exits 1 if a speed misses it by more than the tolerance, or by more
+    than 1e-5 extrapolated from two time steps."""
     print("(eps diskimpact: the fitted model's epsilon; t_c diskimpact: the "
           "finite elements')")
-    results = run("liggghts", "liggghts_thornton.txt", thornton)
+    results = run(code, snippet_name, model)
     error = max(abs(e_dem - eps) for _, eps, e_dem, _, _ in results)
-    print(f"LIGGGHTS thornton_ning against the model: largest |eps_DEM - "
+    print(f"{code} {snippet_name} against the model: largest |eps_DEM - "
           f"eps| = {error:.2e} (tolerance {args.tolerance:g})")
     # LIGGGHTS adds the overlap's increments with the stiffness at the
-    # step's end, first order in the step: halved steps extrapolate to the
-    # model's closed form.
-    snippet = open(os.path.join(args.directory, "dem",
-                                "liggghts_thornton.txt")).read()
+    # step's end, Yade's LudingMat its unloading stiffness from the largest
+    # overlap of the step before, both first order in the step: halved
+    # steps extrapolate to the model's closed form.
+    snippet = open(os.path.join(args.directory, "dem", snippet_name)).read()
     fine = dem_collision.STEPS_PER_CONTACT * 2
     print(f"  extrapolated from {fine // 2} and {fine} steps per contact:")
     extrapolated_error = 0.0
     for v, eps, e_dem, _, _ in results:
-        e_fine = dem_collision.collide("liggghts", snippet, radius, density,
+        e_fine = dem_collision.collide(code, snippet, radius, density,
                                        v, steps_per_contact=fine)[0]
         e_limit = 2.0 * e_fine - e_dem
         extrapolated_error = max(extrapolated_error, abs(e_limit - eps))
         print(f"  {v:11.5g}  {eps:13.7f}  {e_limit:12.7f}  "
               f"{e_limit - eps:+11.2e}")
-    print(f"LIGGGHTS thornton_ning extrapolated: largest |eps_DEM - eps| = "
+    print(f"{code} {snippet_name} extrapolated: largest |eps_DEM - eps| = "
           f"{extrapolated_error:.2e} (tolerance 1e-5)")
     if not (error <= args.tolerance and extrapolated_error <= 1e-5):
-        sys.exit("dem_check: LIGGGHTS' thornton_ning misses the fitted "
+        sys.exit(f"dem_check: {code}'s {snippet_name} misses the fitted "
                  "model's epsilon")
 
 

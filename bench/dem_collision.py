@@ -133,9 +133,12 @@ def time_step(code, snippet, radius, density, speed, dimension=3,
 
 
 def yade_script(snippet, radius, speed, tangential, dt, steps, gap):
-    """Yade's script: the snippet defines 'mat'; a PyRunner writes the
-    history 'step gap v1x v2x v1y omega1z'."""
+    """Yade's script: the snippet defines 'mat' (ViscElMat or LudingMat); a
+    PyRunner writes the history 'step gap v1x v2x v1y omega1z'."""
     x = radius + 0.5 * gap
+    law = "LudingMat_LudingMat_LudingPhys" if "LudingMat(" in snippet else \
+        "ViscElMat_ViscElMat_ViscElPhys"
+    physics = law.split("_")[-1]
     return f"""\
 # ---- contact model (snippet) ----
 {snippet.strip()}
@@ -159,8 +162,8 @@ def record():
 O.engines = [ForceResetter(),
              InsertionSortCollider([Bo1_Sphere_Aabb()]),
              InteractionLoop([Ig2_Sphere_Sphere_ScGeom()],
-                             [Ip2_ViscElMat_ViscElMat_ViscElPhys()],
-                             [Law2_ScGeom_ViscElPhys_Basic()]),
+                             [Ip2_{law}()],
+                             [Law2_ScGeom_{physics}_Basic()]),
              NewtonIntegrator(damping=0., gravity=(0, 0, 0)),
              PyRunner(command="record()", iterPeriod=1)]
 O.dt = {dt!r}

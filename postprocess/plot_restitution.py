@@ -5,8 +5,9 @@
 usage: plot_restitution.py restitution.csv [more.csv ...] [-o epsilon.png]
 
 Beside a table of task 'restitution law' for a plastic sphere, its
-restitution_law.json holds Thornton's model fitted to it
-(docs/theory/thornton-model.md); the model's epsilon(v) is drawn too.
+restitution_law.json holds Thornton's and Luding's models fitted to it
+(docs/theory/thornton-model.md, docs/theory/luding-model.md); their
+epsilon(v) is drawn too.
 
 Speeds are drawn as v/c, or in m/s for the tables of SI runs (Units = SI):
 their restitution.h5 beside the CSV holds the speed unit c in m/s (root
@@ -48,12 +49,21 @@ def thornton_epsilon(u):
     return math.sqrt(returned / (0.4 * u * u))
 
 
-def thornton_fit(csv_path):
-    """restitution_law.json's Thornton fit beside the table, or None."""
+def luding_epsilon(x, a):
+    """epsilon of Yade's LudingMat at v/v_p = x with kp/k1 = 1 + a
+    (docs/theory/luding-model.md)."""
+    return (1.0 + a * x) ** -0.5 if x <= 1.0 else \
+        math.sqrt(1.0 - a / ((1.0 + a) * x * x))
+
+
+def plastic_fits(csv_path):
+    """restitution_law.json's Thornton and Luding fits beside the table
+    (None where absent)."""
     path = os.path.join(os.path.dirname(csv_path) or ".", "restitution_law.json")
     if not os.path.exists(path):
-        return None
-    return json.load(open(path)).get("thornton_fit")
+        return None, None
+    law = json.load(open(path))
+    return law.get("thornton_fit"), law.get("luding_fit")
 
 
 p = argparse.ArgumentParser()
@@ -77,7 +87,7 @@ for path, c in zip(a.files, units):
                else 0.0 for r in sel]
         ax.errorbar(v, eps, yerr=err, fmt="o-", capsize=3, ms=4,
                     label=f"FE, nu2 = {float(nu2):.2f}")
-    fit = thornton_fit(path)
+    fit, luding = plastic_fits(path)
     if fit and v:
         scale = c if si else 1.0
         lo, hi = math.log(min(v)), math.log(max(v))
@@ -86,6 +96,12 @@ for path, c in zip(a.files, units):
                         for x in curve], "--",
                 label="Thornton (LIGGGHTS thornton_ning), p_y = "
                       f"{fit['limiting_pressure_over_yield_stress']:.3g} Y")
+    if luding and v:
+        a_l = luding["stiffness_ratio"] - 1.0
+        ax.plot(curve, [luding_epsilon(x / (luding["plastic_speed"] * scale),
+                                       a_l) for x in curve], ":",
+                label="Luding (Yade LudingMat), kp/k1 = "
+                      f"{luding['stiffness_ratio']:.3g}")
 ax.set_xscale("log")
 ax.set_xlabel("v_i [m/s]" if si else "v_i / c")
 ax.set_ylabel("epsilon")

@@ -140,5 +140,29 @@ namespace DiskImpact
         0.4 * (x_m * x_m * std::sqrt(x_m) - x_p * x_p * std::sqrt(x_p));
       return std::sqrt(returned / loading_work);
     }
+
+    double
+    luding_epsilon(const double x, const double a)
+    {
+      if (!(x > 0.) || !(a > 0.))
+        throw std::domain_error(
+          "luding_epsilon: needs v / v_p > 0 and kp / k1 > 1");
+      return x <= 1. ? 1. / std::sqrt(1. + a * x) :
+                       std::sqrt(1. - a / ((1. + a) * x * x));
+    }
+
+    double
+    luding_contact_time(const double x, const double a)
+    {
+      if (!(x > 0.) || !(a > 0.))
+        throw std::domain_error(
+          "luding_contact_time: needs v / v_p > 0 and kp / k1 > 1");
+      if (x <= 1.)
+        return 0.5 * M_PI * (1. + 1. / std::sqrt(1. + a * x));
+      const double omega = std::sqrt(1. + a); // the kp branch's frequency
+      const double s0    = 1. / (1. + a);     // d_p - d_p0, units of d_p
+      return std::asin(1. / x) +
+             (M_PI - std::atan2(s0 * omega, std::sqrt(x * x - 1.))) / omega;
+    }
   } // namespace Reference
 } // namespace DiskImpact

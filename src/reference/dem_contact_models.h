@@ -119,5 +119,37 @@ namespace DiskImpact
      */
     double
     thornton_ning_epsilon(double speed_over_yield_speed);
+
+    /**
+     * Luding's elastic-plastic contact as Yade's LudingMat has it without
+     * adhesion (kc = 0) and viscosity (G0 = 0), a linear hysteretic spring
+     * after Walton and Braun, for a sphere on a rigid wall or two identical
+     * spheres: loading F = k1 d; unloading and reloading F = k2 (d - d0),
+     * d0 = (1 - k1/k2) d_max, with k2 = k1 + (kp - k1) d_max / d_p growing
+     * with the largest overlap up to kp at the plasticity depth d_p; beyond
+     * d_p loading and unloading follow F = kp (d - d_p0),
+     * d_p0 = (1 - k1/kp) d_p. With a = kp/k1 - 1 and x = v / v_p (v_p the
+     * speed whose largest overlap is d_p):
+     *
+     *   epsilon = (1 + a x)^{-1/2}             for x <= 1,
+     *   epsilon = (1 - a / ((1 + a) x^2))^{1/2} for x > 1
+     *
+     * (beyond v_p the loss stays the loop up to d_p, k1 d_p^2 a / (2(1+a))).
+     */
+    double
+    luding_epsilon(double speed_over_plastic_speed, double stiffness_excess);
+
+    /**
+     * The contact time of the collision of luding_epsilon() (force back to
+     * zero) in units of sqrt(m/k1), m the effective mass:
+     * (pi/2)(1 + (1 + a x)^{-1/2}) for x <= 1; for x > 1 the time
+     * asin(1/x) to reach d_p on the k1 branch, then the kp branch about
+     * d_p0 entered at s0 = d_p / (1 + a) with the speed sqrt(x^2 - 1)
+     * (units of d_p and v_p) until it reaches d_p0:
+     * (pi - atan2(s0 sqrt(1 + a), sqrt(x^2 - 1))) / sqrt(1 + a).
+     */
+    double
+    luding_contact_time(double speed_over_plastic_speed,
+                        double stiffness_excess);
   } // namespace Reference
 } // namespace DiskImpact

@@ -1,5 +1,6 @@
 #include "restitution/dem_inputs.h"
 
+#include <cmath>
 #include <iomanip>
 #include <regex>
 #include <sstream>
@@ -94,7 +95,51 @@ namespace DiskImpact
              "\npair_style gran model thornton_ning tangential history\n"
              "pair_coeff * *\n";
     }
+
+    /// Yade's elastic-plastic contact of a plastic sphere (DemInputs).
+    std::string
+    yade_luding_file(const DemInputs &d, const std::string &header)
+    {
+      const double a = d.luding_kp / d.luding_k1 - 1.;
+      return "# Yade, LudingMat (Luding's linear elastic-plastic contact) "
+             "without adhesion and viscosity\n" +
+             header +
+             "# Loading stiffness k1, unloading stiffness growing with the "
+             "largest overlap up to kp at\n# the plasticity depth (PhiF): "
+             "kp / k1 = " +
+             ten_digits(d.luding_kp / d.luding_k1) +
+             " and v_p = " + ten_digits(d.luding_plastic_speed) +
+             " m/s fitted to diskimpact's epsilon(v)\n# "
+             "(restitution_law.csv, epsilon_luding_fit): epsilon = (1 + " +
+             ten_digits(a) + " v / v_p)^(-1/2) up to v_p, then\n# (1 - " +
+             ten_digits(a / (1. + a)) +
+             " (v_p / v)^2)^(1/2). For two such spheres: Yade gives a "
+             "sphere's contact with\n# a wall no plasticity depth. tc: the "
+             "model's contact time at the reference speed.\ntc = " +
+             ten_digits(d.luding_contact_time) +
+             "\nmat = O.materials.append(LudingMat(k1=" +
+             ten_digits(d.luding_k1) + ", kp=" + ten_digits(d.luding_kp) +
+             ", kc=0., PhiF=" + ten_digits(d.luding_phi_f) +
+             ", G0=0., ks=0., frictionAngle=0., density=" +
+             ten_digits(d.density) + "))\n";
+    }
   } // namespace
+
+  void
+  set_luding_inputs(DemInputs   &d,
+                    const double stiffness_ratio,
+                    const double plastic_speed)
+  {
+    const double a = stiffness_ratio - 1.;
+    const double tau =
+      Reference::luding_contact_time(d.speed / plastic_speed, a);
+    d.luding_k1 = d.mass * tau * tau / (2. * d.contact_time * d.contact_time);
+    d.luding_kp = stiffness_ratio * d.luding_k1;
+    const double depth = plastic_speed * std::sqrt(2. * d.mass / d.luding_k1);
+    d.luding_phi_f     = depth * a / (stiffness_ratio * d.radius);
+    d.luding_plastic_speed = plastic_speed;
+    d.luding_contact_time  = d.contact_time;
+  }
 
   double
   liggghts_yield_ratio(const DemInputs &d)
@@ -197,6 +242,8 @@ namespace DiskImpact
       "\nset friction coefficient particles    = " + mu + "\n";
     if (d.limiting_pressure > 0.)
       files["liggghts_thornton.txt"] = liggghts_thornton_file(d, head.str());
+    if (d.luding_k1 > 0.)
+      files["yade_luding.py"] = yade_luding_file(d, head.str());
     return files;
   }
 

@@ -19,7 +19,26 @@ namespace DiskImpact
     /// A plastic sphere's Thornton fit (0: elastic, no such file): the
     /// limiting pressure p_y [Pa] and the model's v_y [m/s].
     double limiting_pressure = 0., yield_speed = 0.;
+    /// A plastic sphere's Luding fit (luding_k1 = 0: none): Yade's
+    /// LudingMat k1 [N/m], kp [N/m] and PhiF for two identical spheres
+    /// (set_luding_inputs()), the model's v_p [m/s] and its contact time at
+    /// the reference speed [s].
+    double luding_k1 = 0., luding_kp = 0., luding_phi_f = 0.,
+           luding_plastic_speed = 0., luding_contact_time = 0.;
   };
+
+  /**
+   * Yade's LudingMat in @p d from the wall's fitted kp / k1 =
+   * @p stiffness_ratio and v_p = @p plastic_speed [m/s], for two identical
+   * spheres (effective mass m/2; Yade's Ip2 puts the plasticity depth of a
+   * sphere's contact with a non-sphere to zero): k1 = m tau^2 / (2 t_c^2)
+   * with tau = Reference::luding_contact_time() at v_ref / v_p, so that
+   * the contact time at the reference speed is d.contact_time;
+   * d_p = v_p sqrt(2 m / k1); PhiF = d_p (kp - k1) / (kp R), as Yade's
+   * d_p = kp / (kp - k1) PhiF R for two spheres of radius R.
+   */
+  void
+  set_luding_inputs(DemInputs &d, double stiffness_ratio, double plastic_speed);
 
   /// LIGGGHTS' 'coefficientYieldRatio' of the Thornton fit in @p d: the
   /// contact radius of yield over R, a_y / R = pi p_y / (2 E*).
@@ -54,7 +73,9 @@ namespace DiskImpact
    * the code ties to the normal one. For a plastic sphere also
    * liggghts_thornton.txt: LIGGGHTS' 'model thornton_ning' without
    * adhesion with the fitted yield ratio, velocity-dependent like the FE's
-   * epsilon (Reference::thornton_ning_epsilon()).
+   * epsilon (Reference::thornton_ning_epsilon()), and yade_luding.py:
+   * Yade's LudingMat without adhesion with the fitted Luding model
+   * (Reference::luding_epsilon()).
    */
   std::map<std::string, std::string>
   dem_files(const DemInputs &d);

@@ -11,6 +11,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <utility>
 
 namespace DiskImpact
 {
@@ -63,6 +65,34 @@ namespace DiskImpact
     return {v_ref, std::vector<double>(a.begin(), a.end())};
   }
 
+  namespace
+  {
+    /// The minimum of @p f over [@p low, @p high]: a scan of @p n_scan
+    /// steps brackets it (the misfits here are flat or have several
+    /// valleys), Brent's method refines it. Returns (argument, value).
+    std::pair<double, double>
+    scan_and_minimize(const std::function<double(double)> &f,
+                      const double                         low,
+                      const double                         high,
+                      const unsigned int                   n_scan)
+    {
+      const double step = (high - low) / n_scan;
+      double       best = low, best_value = f(low);
+      for (unsigned int k = 1; k <= n_scan; ++k)
+        if (const double value = f(low + k * step); value < best_value)
+          {
+            best_value = value;
+            best       = low + k * step;
+          }
+      boost::uintmax_t iterations = 100;
+      return boost::math::tools::brent_find_minima(f,
+                                                   std::max(low, best - step),
+                                                   std::min(high, best + step),
+                                                   40,
+                                                   iterations);
+    }
+  } // namespace
+
   ThorntonFit
   fit_thornton(const RestitutionTable &table, const double yield_strain)
   {
@@ -81,25 +111,42 @@ namespace DiskImpact
         }
       return sum;
     };
-    // The misfit is flat where every speed is below the model's v_y, so a
-    // scan brackets the minimum before Brent refines it.
-    const double       low = std::log(0.3), high = std::log(30.);
-    const unsigned int n_scan = 60;
-    const double       step   = (high - low) / n_scan;
-    double             best = low, best_value = model(low);
-    for (unsigned int k = 1; k <= n_scan; ++k)
-      if (const double value = model(low + k * step); value < best_value)
-        {
-          best_value = value;
-          best       = low + k * step;
-        }
-    boost::uintmax_t iterations = 100;
-    const auto       minimum    = boost::math::tools::brent_find_minima(
-      model, best - step, best + step, 40, iterations);
-    model(minimum.first);
+    // The misfit is flat where every speed is below the model's v_y.
+    model(scan_and_minimize(model, std::log(0.3), std::log(30.), 60).first);
     for (unsigned int i = 0; i < table.v.size(); ++i)
       fit.max_residual =
         std::max(fit.max_residual, std::abs(fit.epsilon[i] - table.epsilon[i]));
+    return fit;
+  }
+
+  LudingFit
+  fit_luding(const RestitutionTable &table)
+  {
+    LudingFit fit;
+    // Beyond v_p the model's epsilon rises again toward 1: v_p at the
+    // highest speed keeps it falling over the whole table.
+    fit.plastic_speed = *std::max_element(table.v.begin(), table.v.end());
+    const auto misfit = [&](const double log_excess) {
+      double sum = 0.;
+      for (unsigned int i = 0; i < table.v.size(); ++i)
+        sum +=
+          std::pow(Reference::luding_epsilon(table.v[i] / fit.plastic_speed,
+                                             std::exp(log_excess)) -
+                     table.epsilon[i],
+                   2);
+      return sum;
+    };
+    const double excess = std::exp(
+      scan_and_minimize(misfit, std::log(1e-3), std::log(1e3), 60).first);
+    fit.stiffness_ratio = 1. + excess;
+    for (unsigned int i = 0; i < table.v.size(); ++i)
+      {
+        fit.epsilon.push_back(
+          Reference::luding_epsilon(table.v[i] / fit.plastic_speed, excess));
+        fit.max_residual =
+          std::max(fit.max_residual,
+                   std::abs(fit.epsilon.back() - table.epsilon[i]));
+      }
     return fit;
   }
 

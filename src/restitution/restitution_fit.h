@@ -49,6 +49,23 @@ namespace DiskImpact
   ThorntonFit
   fit_thornton(const RestitutionTable &table, double yield_strain);
 
+  /// Luding's elastic-plastic contact, Yade's LudingMat
+  /// (Reference::luding_epsilon()), fitted to a sphere's epsilon(v).
+  struct LudingFit
+  {
+    double              stiffness_ratio = 0.; ///< kp / k1
+    double              plastic_speed   = 0.; ///< v_p, in the table's units
+    std::vector<double> epsilon;              ///< the model's, at each speed
+    double              max_residual = 0.;
+  };
+
+  /// v_p at the table's highest speed (beyond it the model's epsilon rises
+  /// again toward 1) and the kp / k1 minimizing sum (eps_model - eps)^2
+  /// over the speeds, all alike: a scan over kp / k1 - 1 from 1e-3 to 1e3,
+  /// then Brent's method.
+  LudingFit
+  fit_luding(const RestitutionTable &table);
+
   /// y(x0) by linear interpolation in log x (clamped to the ends).
   double
   interpolate_in_log(const std::vector<double> &x,

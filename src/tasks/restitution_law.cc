@@ -205,6 +205,21 @@ namespace DiskImpact
                                        material.yield_stress() /
                                          material.in_plane_young_modulus()) :
                           ThorntonFit();
+      // Luding's, Yade's elastic-plastic contact, likewise.
+      const LudingFit luding =
+        thornton_fitted ? fit_luding(table) : LudingFit();
+
+      // A plastic sphere's fit of a contact model as JSON (else null).
+      const auto plastic_fit_json = [&](const std::string         &model,
+                                        const std::string         &fitted,
+                                        const std::vector<double> &epsilon,
+                                        const double               residual) {
+        return thornton_fitted ?
+                 "{\"model\": \"" + model + "\", " + fitted +
+                   ", \"epsilon\": " + json_list(epsilon) +
+                   ", \"max_residual\": " + ten_digits(residual) + "}" :
+                 std::string("null");
+      };
 
       // The table, dimensionless and in SI.
       std::vector<std::string> names{"velocity",
@@ -216,7 +231,9 @@ namespace DiskImpact
                                      "epsilon_smooth_fit",
                                      "epsilon_theory_fit"};
       if (thornton_fitted)
-        names.push_back("epsilon_thornton_fit");
+        for (const std::string name :
+             {"epsilon_thornton_fit", "epsilon_luding_fit"})
+          names.push_back(name);
       if (units.is_si())
         for (const std::string name :
              {"speed_si", "contact_time_si", "delta_max_si", "force_max_si"})
@@ -237,7 +254,8 @@ namespace DiskImpact
                                      theory.epsilon[i]})
             csv.add(value);
           if (thornton_fitted)
-            csv.add(thornton.epsilon[i]);
+            for (const double value : {thornton.epsilon[i], luding.epsilon[i]})
+              csv.add(value);
           if (units.is_si())
             for (const double value : {v[i] * units.speed(),
                                        table.contact_time[i] * units.time(),
@@ -288,6 +306,9 @@ namespace DiskImpact
                 thornton.pressure_ratio * material.yield_stress() *
                 units.young_modulus() / material.young_modulus();
               d.yield_speed = thornton.yield_speed * units.speed();
+              set_luding_inputs(d,
+                                luding.stiffness_ratio,
+                                luding.plastic_speed * units.speed());
             }
           files  = dem_files(d);
           dem_json << "{\"reference_speed_si\": " << ten_digits(d.speed)
@@ -308,7 +329,13 @@ namespace DiskImpact
                      << ", \"limiting_pressure_si\": "
                      << ten_digits(d.limiting_pressure)
                      << ", \"thornton_yield_speed_si\": "
-                     << ten_digits(d.yield_speed);
+                     << ten_digits(d.yield_speed)
+                     << ", \"yade_luding_k1\": " << ten_digits(d.luding_k1)
+                     << ", \"yade_luding_kp\": " << ten_digits(d.luding_kp)
+                     << ", \"yade_luding_phi_f\": "
+                     << ten_digits(d.luding_phi_f)
+                     << ", \"luding_plastic_speed_si\": "
+                     << ten_digits(d.luding_plastic_speed);
           dem_json << ", \"files\": [";
           for (auto file = files.begin(); file != files.end(); ++file)
             dem_json << (file == files.begin() ? "" : ", ") << "\"dem/"
@@ -372,17 +399,23 @@ namespace DiskImpact
                  ", \"A_si\": " + ten_digits(theory.A * units.input_time()) :
                  std::string())
            << ", \"max_residual\": " << ten_digits(theory_residual) << "},\n"
-           << "  \"thornton_fit\": ";
-      if (thornton_fitted)
-        json << "{\"model\": \"Thornton 1997 as LIGGGHTS' thornton_ning "
-                "without adhesion\", \"limiting_pressure_over_yield_stress\": "
-             << ten_digits(thornton.pressure_ratio)
-             << ", \"yield_speed\": " << ten_digits(thornton.yield_speed)
-             << ", \"epsilon\": " << json_list(thornton.epsilon)
-             << ", \"max_residual\": " << ten_digits(thornton.max_residual)
-             << "}";
-      else
-        json << "null";
+           << "  \"thornton_fit\": "
+           << plastic_fit_json("Thornton 1997 as LIGGGHTS' thornton_ning "
+                               "without adhesion",
+                               "\"limiting_pressure_over_yield_stress\": " +
+                                 ten_digits(thornton.pressure_ratio) +
+                                 ", \"yield_speed\": " +
+                                 ten_digits(thornton.yield_speed),
+                               thornton.epsilon,
+                               thornton.max_residual)
+           << ",\n  \"luding_fit\": "
+           << plastic_fit_json(
+                "Luding 2008 as Yade's LudingMat without "
+                "adhesion",
+                "\"stiffness_ratio\": " + ten_digits(luding.stiffness_ratio) +
+                  ", \"plastic_speed\": " + ten_digits(luding.plastic_speed),
+                luding.epsilon,
+                luding.max_residual);
       json << ",\n"
            << "  \"reference_speed\": " << ten_digits(v_ref)
            << ",\n  \"epsilon_at_reference_speed\": " << ten_digits(epsilon_ref)
@@ -410,14 +443,19 @@ namespace DiskImpact
                 << "\n  at v_ref = " << reference_speed
                 << ": epsilon = " << ten_digits(epsilon_ref) << '\n';
       if (thornton_fitted)
-        std::cout << "  Thornton's model (LIGGGHTS' thornton_ning): p_y = "
-                  << ten_digits(thornton.pressure_ratio) << " Y, v_y = "
-                  << (units.is_si() ?
-                        ten_digits(thornton.yield_speed * units.speed()) +
-                          " m/s" :
-                        ten_digits(thornton.yield_speed) + " c")
-                  << ", largest residual " << ten_digits(thornton.max_residual)
-                  << '\n';
+        std::cout
+          << "  Thornton's model (LIGGGHTS' thornton_ning): p_y = "
+          << ten_digits(thornton.pressure_ratio) << " Y, v_y = "
+          << (units.is_si() ?
+                ten_digits(thornton.yield_speed * units.speed()) + " m/s" :
+                ten_digits(thornton.yield_speed) + " c")
+          << ", largest residual " << ten_digits(thornton.max_residual)
+          << "\n  Luding's model (Yade's LudingMat): kp / k1 = "
+          << ten_digits(luding.stiffness_ratio) << ", v_p = "
+          << (units.is_si() ?
+                ten_digits(luding.plastic_speed * units.speed()) + " m/s" :
+                ten_digits(luding.plastic_speed) + " c")
+          << ", largest residual " << ten_digits(luding.max_residual) << '\n';
       if (files.empty())
         std::cout << "  DEM inputs: need 'Units = SI'\n";
       else

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 using namespace DiskImpact::Reference;
 
@@ -166,4 +167,62 @@ TEST_CASE("LIGGGHTS' thornton_ning: epsilon of its force law", "[dem]")
     std::log(10.);
   CHECK(slope == Approx(-0.25).margin(2e-3));
   CHECK_THROWS(thornton_ning_epsilon(0.));
+}
+
+namespace
+{
+  /// epsilon and contact time of Yade's LudingMat (kc = 0, G0 = 0) at
+  /// v / v_p = @p x with kp / k1 = 1 + @p a, by velocity Verlet with steps
+  /// of 1e-5 on its force law in units of k1, the mass and d_p (so that
+  /// v_p = 1): k1 d while the overlap grows below d_p, kp (d - d_p0) beyond;
+  /// once it shrinks, k2 (d - d0) with k2 and d0 of the largest overlap,
+  /// until the force is 0.
+  std::pair<double, double>
+  integrated_luding(const double x, const double a)
+  {
+    const double kp = 1. + a, d_p0 = 1. - 1. / kp;
+    double       d = 0., v = x, t = 0., d_max = 0., k2 = 1., d0 = 0.;
+    bool         unloading = false;
+    const auto   force     = [&](const double y) {
+      if (unloading)
+        return k2 * (y - d0);
+      return y <= 1. ? y : kp * (y - d_p0);
+    };
+    const double dt           = 1e-5;
+    double       acceleration = -force(d);
+    while (true)
+      {
+        const double d_new = d + v * dt + 0.5 * acceleration * dt * dt;
+        if (!unloading && d_new < d)
+          {
+            d_max     = d;
+            k2        = 1. + a * std::min(d_max, 1.);
+            d0        = d_max <= 1. ? (1. - 1. / k2) * d_max : d_p0;
+            unloading = true;
+          }
+        t += dt;
+        if (unloading && force(d_new) <= 0.)
+          return {-v / x, t};
+        const double a_new = -force(d_new);
+        v += 0.5 * (acceleration + a_new) * dt;
+        d = d_new, acceleration = a_new;
+      }
+  }
+} // namespace
+
+TEST_CASE("Yade's LudingMat: epsilon and contact time of its force law",
+          "[dem]")
+{
+  for (const double a : {0.5, 3.})
+    for (const double x : {0.2, 0.9, 1.5, 4.})
+      {
+        const auto [epsilon, time] = integrated_luding(x, a);
+        CHECK(luding_epsilon(x, a) == Approx(epsilon).margin(1e-4));
+        CHECK(luding_contact_time(x, a) == Approx(time).margin(1e-4));
+      }
+  // continuous at v_p, back toward 1 far beyond it
+  CHECK(luding_epsilon(1. + 1e-12, 3.) == Approx(0.5).epsilon(1e-9));
+  CHECK(luding_epsilon(1e3, 3.) == Approx(1.).margin(1e-6));
+  CHECK_THROWS(luding_epsilon(0., 3.));
+  CHECK_THROWS(luding_contact_time(1., 0.));
 }

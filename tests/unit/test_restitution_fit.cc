@@ -28,3 +28,21 @@ TEST_CASE("Thornton's fit recovers the limiting pressure of its own model",
   REQUIRE(fit.epsilon.size() == 4);
   CHECK(fit.epsilon[0] == 1.);
 }
+
+TEST_CASE("Luding's fit recovers kp / k1 of its own model", "[dem]")
+{
+  const double     a = 2., v_p = 5e-4; // v_p at the highest speed
+  RestitutionTable table;
+  for (const double v : {2e-5, 5e-5, 9e-5, 2e-4, 5e-4})
+    {
+      table.v.push_back(v);
+      table.epsilon.push_back(Reference::luding_epsilon(v / v_p, a));
+      table.error.push_back(1e-3);
+    }
+  const LudingFit fit = fit_luding(table);
+  CHECK(fit.stiffness_ratio == Approx(1. + a).epsilon(1e-6));
+  CHECK(fit.plastic_speed == Approx(v_p).epsilon(1e-6));
+  // a minimum's location is found to about sqrt(machine epsilon)
+  CHECK(fit.max_residual < 1e-7);
+  REQUIRE(fit.epsilon.size() == 5);
+}
