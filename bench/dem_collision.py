@@ -15,8 +15,10 @@ are created and before the run:
              for E > 1e9 Pa in SI units)
   LAMMPS:    pair_style granular
              pair_coeff * * hertz/material E damp nu tangential ... damping ...
-  Yade:      mat = O.materials.append(ViscElMat(en=..., tc=..., ...)) (Python;
-             the generated script builds both spheres from 'mat')
+  Yade:      mat = O.materials.append(ViscElMat(en=..., tc=..., ...)), or
+             LudingMat(k1=..., kp=..., ...) after a line 'tc = ...' (Python;
+             the generated script builds both spheres from 'mat' with the
+             matching Ip2 and Law2)
 
 With --dimension 2 (LAMMPS only) the bodies are disks: 'dimension 2',
 mass rho pi R^2 per unit thickness ('set ... density/disc'), moment of
