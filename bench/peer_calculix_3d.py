@@ -61,7 +61,8 @@ Three parts, run one after the other on one core each
    study's base level, so its error against the reference is a third of
    the bar by construction.
 
-Prints the reference with its bar and wall time; for CalculiX and for
+Prints the reference with its bar and wall time; for each CalculiX mesh
+(--hmin takes several sizes, each run and compared on its own) and for
 each diskimpact setting epsilon, its error |epsilon - eps_ref|, DoFs (3
 per node of the quarter ball), steps and wall time; then the cheapest
 diskimpact setting (smallest wall time) whose error is at most
@@ -73,7 +74,7 @@ CalculiX's error - bar); last the wall time of each part. diskimpact's
 errors are measured against a reference from diskimpact itself (finer
 mesh and time step); CalculiX's are independent of it.
 
-usage: bench/peer_calculix_3d.py [--hmin H] [--hmax H]
+usage: bench/peer_calculix_3d.py [--hmin H [H ...]] [--hmax H]
                                  [--steps-per-contact N] [--speed V]
                                  [--reference-model 3d|axisymmetric]
                                  [--reference-levels N]
@@ -332,10 +333,18 @@ def run_all(args, work):
         eps, bar = args.reference
         reference = {"epsilon": eps, "bar": bar, "levels": None,
                      "seconds": None}
-    start = time.time()
-    ccx = pc.run_calculix(args, work, calculix_input,
-                          contact_time(args.speed))
-    seconds["CalculiX (mesh, input and ccx)"] = time.time() - start
+    ccx = []
+    for hmin in args.hmin:   # each mesh in its own directory
+        start = time.time()
+        mesh_work = os.path.join(work, f"calculix_h{hmin:g}")
+        os.makedirs(mesh_work, exist_ok=True)
+        run = pc.run_calculix(argparse.Namespace(**{**vars(args),
+                                                    "hmin": hmin}),
+                              mesh_work, calculix_input,
+                              contact_time(args.speed))
+        ccx.append({**run, "hmin": hmin})
+        seconds[f"CalculiX h = {hmin:g} R (mesh, input and ccx)"] = \
+            time.time() - start
     start = time.time()
     own = [(name, setting, pc.run_diskimpact(work, name, setting))
            for name, setting in DISKIMPACT_SETTINGS]
@@ -350,25 +359,29 @@ def report(args, reference, ccx, own):
                         f"{model['kappa']:g}, {levels} mesh levels")
     print(f"quarter sphere, nu = {pc.NU:g}, v = {pc.SPEED:g} c; "
           f"{pc.THREADS['OMP_NUM_THREADS']} thread each")
-    print(f"CalculiX: C3D10, h = {args.hmin:g}..{args.hmax:g} R, "
-          f"face-to-face penalty {pc.KAPPA:g} E2 / h, {ccx['steps']} fixed "
-          f"increments of {contact_time(args.speed) * math.sqrt(pc.E2):.3g}"
-          f"/{args.steps_per_contact} R/c")
     for name, setting, _ in own:
         print(f"diskimpact {name}: {pc.describe(setting)}")
-    pc.report_table(reference, ccx, own)
-    if ccx["equations"] is not None and ccx["drift"] is not None:
-        print(f"CalculiX: {ccx['equations']} equations, total energy varies "
-              f"by {100 * ccx['drift']:.2f} % of the initial kinetic energy")
-    pc.report_comparison(reference, ccx, own)
+    for run in ccx:
+        print(f"\nCalculiX: C3D10, h = {run['hmin']:g}..{args.hmax:g} R, "
+              f"face-to-face penalty {pc.KAPPA:g} E2 / h, {run['steps']} "
+              f"fixed increments of "
+              f"{contact_time(args.speed) * math.sqrt(pc.E2):.3g}"
+              f"/{args.steps_per_contact} R/c")
+        pc.report_table(reference, run, own)
+        if run["equations"] is not None and run["drift"] is not None:
+            print(f"CalculiX: {run['equations']} equations, total energy "
+                  f"varies by {100 * run['drift']:.2f} % of the initial "
+                  f"kinetic energy")
+        pc.report_comparison(reference, run, own)
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     for flag, options in (
-            ("--hmin", {"type": float, "default": 0.1, "help":
-                        "CalculiX element size at the contact point [R] "
-                        "(default %(default)s)"}),
+            ("--hmin", {"type": float, "nargs": "+", "default": [0.1],
+                        "help": "CalculiX element size at the contact "
+                        "point [R]; several sizes: one CalculiX run each, "
+                        "each compared on its own (default %(default)s)"}),
             ("--hmax", {"type": float, "default": 0.25, "help":
                         "CalculiX element size far from the contact [R] "
                         "(default %(default)s)"}),
