@@ -1,8 +1,8 @@
 #!/bin/bash
 # epsilon(v) of free disks of finite thickness H beside the plane-stress
 # and plane-strain disks (nu = 0.3), each point a convergence study, one
-# after the other (docs/validation/free-thick-disks.md; about two hours
-# on 2 cores with 24 GB):
+# after the other (docs/validation/free-thick-disks.md; about two and a
+# half hours on 2 cores with 24 GB):
 # - 3D: the quarter y >= 0, 0 <= z <= H/2 with free faces, Q2, penalty
 #   kappa = 100, energy-conserving steps, 'Graded mesh = conforming' (the
 #   graded section extruded through layers graded toward the face); level

@@ -116,7 +116,7 @@ namespace DiskImpact
              " (v_p / v)^2)^(1/2). For two such spheres: Yade gives a "
              "sphere's contact with\n# a wall no plasticity depth. tc: the "
              "model's contact time at the reference speed.\ntc = " +
-             ten_digits(d.luding_contact_time) +
+             ten_digits(d.contact_time) +
              "\nmat = O.materials.append(LudingMat(k1=" +
              ten_digits(d.luding_k1) + ", kp=" + ten_digits(d.luding_kp) +
              ", kc=0., PhiF=" + ten_digits(d.luding_phi_f) +
@@ -138,7 +138,6 @@ namespace DiskImpact
     const double depth = plastic_speed * std::sqrt(2. * d.mass / d.luding_k1);
     d.luding_phi_f     = depth * a / (stiffness_ratio * d.radius);
     d.luding_plastic_speed = plastic_speed;
-    d.luding_contact_time  = d.contact_time;
   }
 
   double

@@ -21,10 +21,10 @@ namespace DiskImpact
     double limiting_pressure = 0., yield_speed = 0.;
     /// A plastic sphere's Luding fit (luding_k1 = 0: none): Yade's
     /// LudingMat k1 [N/m], kp [N/m] and PhiF for two identical spheres
-    /// (set_luding_inputs()), the model's v_p [m/s] and its contact time at
-    /// the reference speed [s].
+    /// (set_luding_inputs()) and the model's v_p [m/s]; its contact time at
+    /// the reference speed is contact_time.
     double luding_k1 = 0., luding_kp = 0., luding_phi_f = 0.,
-           luding_plastic_speed = 0., luding_contact_time = 0.;
+           luding_plastic_speed = 0.;
   };
 
   /**

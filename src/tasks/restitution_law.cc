@@ -199,22 +199,21 @@ namespace DiskImpact
       const bool             sphere    = parameters.geometry.is_sphere();
       const Material        &material  = parameters.material;
       // Thornton's elastic-plastic contact, for a plastic sphere.
-      const bool        thornton_fitted = sphere && material.is_plastic();
+      const bool        plastic_sphere = sphere && material.is_plastic();
       const ThorntonFit thornton =
-        thornton_fitted ? fit_thornton(table,
-                                       material.yield_stress() /
-                                         material.in_plane_young_modulus()) :
-                          ThorntonFit();
+        plastic_sphere ? fit_thornton(table,
+                                      material.yield_stress() /
+                                        material.in_plane_young_modulus()) :
+                         ThorntonFit();
       // Luding's, Yade's elastic-plastic contact, likewise.
-      const LudingFit luding =
-        thornton_fitted ? fit_luding(table) : LudingFit();
+      const LudingFit luding = plastic_sphere ? fit_luding(table) : LudingFit();
 
       // A plastic sphere's fit of a contact model as JSON (else null).
       const auto plastic_fit_json = [&](const std::string         &model,
                                         const std::string         &fitted,
                                         const std::vector<double> &epsilon,
                                         const double               residual) {
-        return thornton_fitted ?
+        return plastic_sphere ?
                  "{\"model\": \"" + model + "\", " + fitted +
                    ", \"epsilon\": " + json_list(epsilon) +
                    ", \"max_residual\": " + ten_digits(residual) + "}" :
@@ -230,7 +229,7 @@ namespace DiskImpact
                                      "force_max",
                                      "epsilon_smooth_fit",
                                      "epsilon_theory_fit"};
-      if (thornton_fitted)
+      if (plastic_sphere)
         for (const std::string name :
              {"epsilon_thornton_fit", "epsilon_luding_fit"})
           names.push_back(name);
@@ -253,7 +252,7 @@ namespace DiskImpact
                                      smooth_values[i],
                                      theory.epsilon[i]})
             csv.add(value);
-          if (thornton_fitted)
+          if (plastic_sphere)
             for (const double value : {thornton.epsilon[i], luding.epsilon[i]})
               csv.add(value);
           if (units.is_si())
@@ -300,7 +299,7 @@ namespace DiskImpact
             d.A, d.young / (1. - d.poisson * d.poisson), d.mass);
           d.yade = Reference::yade_viscel_inputs(d.epsilon, d.contact_time);
           d.friction = parameters.contact.friction_coefficient();
-          if (thornton_fitted)
+          if (plastic_sphere)
             {
               d.limiting_pressure =
                 thornton.pressure_ratio * material.yield_stress() *
@@ -323,7 +322,7 @@ namespace DiskImpact
                    << ten_digits(d.lammps_damping)
                    << ", \"friction_coefficient\": " << ten_digits(d.friction)
                    << ", \"dissipative_constant_si\": " << ten_digits(d.A);
-          if (thornton_fitted)
+          if (plastic_sphere)
             dem_json << ", \"liggghts_thornton_ning_yield_ratio\": "
                      << ten_digits(liggghts_yield_ratio(d))
                      << ", \"limiting_pressure_si\": "
@@ -424,10 +423,12 @@ namespace DiskImpact
            << "\n}\n";
       write_atomically(directory + "/restitution_law.json", json.str());
 
-      // The reference speed in the units of the parameter file.
-      const std::string reference_speed =
-        units.is_si() ? ten_digits(v_ref * units.speed()) + " m/s" :
-                        ten_digits(v_ref) + " c";
+      // A speed in the units of the parameter file.
+      const auto speed_text = [&](const double speed) {
+        return units.is_si() ? ten_digits(speed * units.speed()) + " m/s" :
+                               ten_digits(speed) + " c";
+      };
+      const std::string reference_speed = speed_text(v_ref);
       std::cout << "Restitution law: smooth fit 1 - eps = sum a_k (v / "
                 << reference_speed << ")^{k/5}, a = " << json_list(smooth.a)
                 << ", largest residual " << ten_digits(smooth_residual)
@@ -442,20 +443,16 @@ namespace DiskImpact
                 << ten_digits(theory_residual)
                 << "\n  at v_ref = " << reference_speed
                 << ": epsilon = " << ten_digits(epsilon_ref) << '\n';
-      if (thornton_fitted)
-        std::cout
-          << "  Thornton's model (LIGGGHTS' thornton_ning): p_y = "
-          << ten_digits(thornton.pressure_ratio) << " Y, v_y = "
-          << (units.is_si() ?
-                ten_digits(thornton.yield_speed * units.speed()) + " m/s" :
-                ten_digits(thornton.yield_speed) + " c")
-          << ", largest residual " << ten_digits(thornton.max_residual)
-          << "\n  Luding's model (Yade's LudingMat): kp / k1 = "
-          << ten_digits(luding.stiffness_ratio) << ", v_p = "
-          << (units.is_si() ?
-                ten_digits(luding.plastic_speed * units.speed()) + " m/s" :
-                ten_digits(luding.plastic_speed) + " c")
-          << ", largest residual " << ten_digits(luding.max_residual) << '\n';
+      if (plastic_sphere)
+        std::cout << "  Thornton's model (LIGGGHTS' thornton_ning): p_y = "
+                  << ten_digits(thornton.pressure_ratio)
+                  << " Y, v_y = " << speed_text(thornton.yield_speed)
+                  << ", largest residual " << ten_digits(thornton.max_residual)
+                  << "\n  Luding's model (Yade's LudingMat): kp / k1 = "
+                  << ten_digits(luding.stiffness_ratio)
+                  << ", v_p = " << speed_text(luding.plastic_speed)
+                  << ", largest residual " << ten_digits(luding.max_residual)
+                  << '\n';
       if (files.empty())
         std::cout << "  DEM inputs: need 'Units = SI'\n";
       else
