@@ -4,6 +4,7 @@
 #include "base/run_error.h"
 #include "impact/impact_operators.h"
 #include "impact/impact_simulation.h"
+#include "impact/measured_contact_grading.h"
 #include "output/csv_table.h"
 #include "run/parameters.h"
 
@@ -389,10 +390,16 @@ namespace DiskImpact
   }
 
   ConvergedEpsilon
-  ImpactConvergenceStudy::run(const Parameters &parameters,
+  ImpactConvergenceStudy::run(const Parameters &given,
                               MPI_Comm          communicator,
                               std::ostream     *log) const
   {
+    // Every rank measures the contact on its own: the same mesh on any
+    // number of ranks.
+    const Parameters parameters =
+      with_mesh_graded_for_measured_contact(given, MPI_COMM_SELF);
+    if (log != nullptr && given.impact.grades_for_measured_contact())
+      *log << describe_measured_grading(parameters) << '\n';
     std::vector<StudyRun>             runs{{"base", 0, 0, {}, 0.}};
     std::vector<Parameters>           points{parameters};
     const std::array<unsigned int, 3> levels{

@@ -136,7 +136,8 @@ namespace DiskImpact
       , constraint_map(*this->operators->constraint_map)
       , series(time_series_table())
   {
-    summary.velocity = parameters.impact.velocity();
+    summary.velocity          = parameters.impact.velocity();
+    summary.graded_half_width = graded_width(parameters) / radius;
     summary.angle    = parameters.impact.incidence_angle_degrees();
     summary.friction = parameters.contact.friction_coefficient();
     (parameters.geometry.is_sphere() ? summary.ramirez_u :
@@ -527,6 +528,8 @@ namespace DiskImpact
           plastic_work})
       series.add(value);
     summary.delta_max = std::max(summary.delta_max, -x_com);
+    summary.contact_half_width_max =
+      std::max(summary.contact_half_width_max, step.half_width() / radius);
     // The state of the largest force, where the contact's stress peaks
     // (record_stress_peak(), 2D models).
     if constexpr (dim == 2)

@@ -59,7 +59,9 @@ namespace DiskImpact
                     "plastic_work",
                     "plastic_strain_max",
                     "plastic_iterations",
-                    "tangent_factorizations"});
+                    "tangent_factorizations",
+                    "contact_half_width_max",
+                    "graded_half_width"});
     table.start_row();
     for (const double value : {s.velocity,
                                s.epsilon,
@@ -111,6 +113,8 @@ namespace DiskImpact
       table.add(value);
     table.add(s.plastic_iterations);
     table.add(s.tangent_factorizations);
+    table.add(s.contact_half_width_max);
+    table.add(s.graded_half_width);
     return table;
   }
 } // namespace DiskImpact

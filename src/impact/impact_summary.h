@@ -64,6 +64,10 @@ namespace DiskImpact
     double       contact_time      = 0.; ///< [R / c]
     double       delta_max         = 0.; ///< largest centre-of-mass approach
     double       force_max         = 0.; ///< largest force / (E2 R)
+    /// The contact's largest half-width and the half-width the mesh is
+    /// graded for ('Graded half-width', Hertz's or measured), over R.
+    double contact_half_width_max = 0.;
+    double graded_half_width      = 0.;
     /// The largest von Mises stress near the contact at the largest force
     /// (over E2; 2D models) and its depth below the contact point [R]:
     /// the body first yields where it reaches Y.

@@ -119,6 +119,12 @@ namespace DiskImpact
     {
       return fixed_half_width;
     }
+    /// 'Grade for measured contact'; with_mesh_graded_for() clears it.
+    bool
+    grades_for_measured_contact() const
+    {
+      return measured_grading;
+    }
     /// 'Graded mesh = conforming': the graded mesh halved without hanging
     /// nodes (a disk in 3D: extruded through graded layers).
     bool
@@ -188,6 +194,7 @@ namespace DiskImpact
     double              mesh_grading        = 0.3;
     double              fine_zone           = default_fine_zone_radius;
     double              fixed_half_width    = 0.;
+    bool                measured_grading    = false;
     bool                conforming          = false;
     int                 layer_levels        = 0;
     std::string         law_constant        = "exact";

@@ -3,6 +3,7 @@
 #include "impact/impact_estimates.h"
 #include "impact/impact_mesh.h"
 #include "impact/impact_simulation.h"
+#include "impact/measured_contact_grading.h"
 #include "run/parameters.h"
 #include "run/task_registry.h"
 
@@ -43,8 +44,10 @@ namespace DiskImpact
 
     /// Task 'impact': one impact, its time series, summary and a printout.
     void
-    run_impact_task(const Parameters &parameters, MPI_Comm communicator)
+    run_impact_task(const Parameters &given, MPI_Comm communicator)
     {
+      const Parameters parameters =
+        with_mesh_graded_for_measured_contact(given, communicator);
       ConditionalOStream pcout(std::cout,
                                Utilities::MPI::this_mpi_process(communicator) ==
                                  0);
@@ -57,6 +60,8 @@ namespace DiskImpact
         pcout << ", friction coefficient "
               << parameters.contact.friction_coefficient();
       pcout << std::endl;
+      if (given.impact.grades_for_measured_contact())
+        pcout << describe_measured_grading(parameters) << std::endl;
       const ImpactSummary s = run_impact(parameters, communicator);
       on_root(communicator, [&]() {
         write_summary(s, parameters.run.output_directory + "/summary.csv");

@@ -2,6 +2,7 @@
 
 #include "base/run_error.h"
 #include "body/solid_geometry.h"
+#include "impact/measured_contact_grading.h"
 #include "run/parameters.h"
 
 #include <deal.II/base/mpi.h>
@@ -134,8 +135,11 @@ namespace DiskImpact
     /// builds, refused beyond the budget for @p at_once meshes, and check
     /// what depends on the meshes.
     void
-    check_meshes(const Parameters &parameters, const unsigned int at_once)
+    check_meshes(const Parameters &given, const unsigned int at_once)
     {
+      // A mesh still to be graded for the measured contact is counted as
+      // graded for a wide one.
+      const Parameters parameters = with_mesh_graded_for_wide_contact(given);
       if (parameters.geometry.dimension() == 3)
         {
           Triangulation<3> mesh(

@@ -6,6 +6,7 @@
 #include "impact/impact_estimates.h"
 #include "impact/impact_mesh.h"
 #include "impact/impact_simulation.h"
+#include "impact/measured_contact_grading.h"
 #include "output/csv_table.h"
 #include "output/file_lock.h"
 #include "output/hdf5_output.h"
@@ -163,7 +164,11 @@ namespace DiskImpact
                    .run(parameters, MPI_COMM_SELF, nullptr);
       else
         {
-          result.base    = run_impact(parameters, MPI_COMM_SELF, false);
+          result.base =
+            run_impact(with_mesh_graded_for_measured_contact(parameters,
+                                                             MPI_COMM_SELF),
+                       MPI_COMM_SELF,
+                       false);
           result.epsilon = result.base.epsilon;
           result.error   = std::nan("");
         }

@@ -3,6 +3,7 @@
 
 #include "body/geometry.h"
 #include "half_disk.h"
+#include "impact/measured_contact_grading.h"
 
 #include <deal.II/grid/tria.h>
 
@@ -81,4 +82,17 @@ TEST_CASE("the finest elements fill the fine zone and grow beyond it",
     }
   // The narrow zone takes fewer cells.
   CHECK(narrow.n_active_cells() < 0.8 * wide.n_active_cells());
+}
+
+TEST_CASE("a mesh graded for a measured contact keeps the element size",
+          "[graded_mesh]")
+{
+  // 6 elements across Hertz's half-width: 6 * 1.576 = 9.46 across a plastic
+  // contact 1.576 times wider, rounded to the nearest even count.
+  CHECK(elements_across_measured_contact(6, 0.032, 0.032 * 1.576) == 10);
+  CHECK(elements_across_measured_contact(6, 0.032, 0.032) == 6);
+  CHECK(elements_across_measured_contact(12, 0.05, 0.075) == 18);
+  CHECK(elements_across_measured_contact(8, 0.05, 0.0374) == 6);
+  // never fewer than 4
+  CHECK(elements_across_measured_contact(2, 0.05, 0.01) == 4);
 }
