@@ -46,20 +46,21 @@ namespace DiskImpact
     void
     run_impact_task(const Parameters &given, MPI_Comm communicator)
     {
-      const Parameters parameters =
-        with_mesh_graded_for_measured_contact(given, communicator);
       ConditionalOStream pcout(std::cout,
                                Utilities::MPI::this_mpi_process(communicator) ==
                                  0);
-      pcout << "Impact at v = " << parameters.impact.velocity() << " c";
-      if (parameters.impact.is_oblique())
+      pcout << "Impact at v = " << given.impact.velocity() << " c";
+      if (given.impact.is_oblique())
         pcout << ", angle of incidence "
-              << parameters.impact.incidence_angle_degrees()
-              << " degrees, spin " << parameters.impact.spin() << " c/R";
-      if (parameters.contact.friction_coefficient() > 0.)
+              << given.impact.incidence_angle_degrees() << " degrees, spin "
+              << given.impact.spin() << " c/R";
+      if (given.contact.friction_coefficient() > 0.)
         pcout << ", friction coefficient "
-              << parameters.contact.friction_coefficient();
+              << given.contact.friction_coefficient();
       pcout << std::endl;
+      // The header first: the measuring impact runs without output.
+      const Parameters parameters =
+        with_mesh_graded_for_measured_contact(given, communicator);
       if (given.impact.grades_for_measured_contact())
         pcout << describe_measured_grading(parameters) << std::endl;
       const ImpactSummary s = run_impact(parameters, communicator);

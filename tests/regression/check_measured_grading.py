@@ -9,16 +9,14 @@ Usage: check_measured_grading.py MEASURED_SUMMARY HERTZ_SUMMARY ELEMENTS
 (ELEMENTS: 'Elements across contact' of the Hertz-graded run)
 """
 import argparse
-import csv
 import sys
 
+from check_plastic_solvers import read_row
 
-def read_row(path):
-    with open(path, newline="") as f:
-        rows = list(csv.DictReader(f))
-    if len(rows) != 1:
-        sys.exit(f"{path}: expected one row, found {len(rows)}")
-    return {k: float(v) for k, v in rows[0].items() if v != ""}
+
+def read_numbers(path):
+    """The one row of summary.csv @p path, its filled columns as numbers."""
+    return {k: float(v) for k, v in read_row(path).items() if v != ""}
 
 
 def main():
@@ -27,7 +25,7 @@ def main():
     p.add_argument("hertz")
     p.add_argument("elements", type=int)
     args = p.parse_args()
-    measured, hertz = read_row(args.measured), read_row(args.hertz)
+    measured, hertz = read_numbers(args.measured), read_numbers(args.hertz)
     a_hertz = hertz["graded_half_width"]
     a_max = hertz["contact_half_width_max"]
     graded = measured["graded_half_width"]
