@@ -112,10 +112,15 @@ def command(case, args):
     return run
 
 
-def execute(cmd, cwd, args):
-    """Run CMD in CWD in a session of its own: (exit code or None on
-    timeout, standard error)."""
-    process = subprocess.Popen(cmd, cwd=cwd, stdout=subprocess.DEVNULL,
+def execute(cmd, cwd, tmpdir, args):
+    """Run CMD in CWD in a session of its own, with TMPDIR as its temporary
+    directory: (exit code or None on timeout, standard error)."""
+    # Open MPI keeps a singleton's session directory below TMPDIR under a
+    # name that every singleton of the user shares; one TMPDIR per case keeps
+    # the shards that run side by side from removing each other's.
+    environment = dict(os.environ, TMPDIR=str(tmpdir))
+    process = subprocess.Popen(cmd, cwd=cwd, env=environment,
+                               stdout=subprocess.DEVNULL,
                                stderr=subprocess.PIPE, start_new_session=True,
                                preexec_fn=limit_memory(args.memory_limit))
     try:
@@ -215,8 +220,10 @@ def run_case(case, args):
     work = Path(tempfile.mkdtemp(prefix=f"robustness-{case['name']}-"))
     cwd = work / "case"
     shutil.copytree(args.cases_dir / case["directory"], cwd, symlinks=True)
+    tmpdir = work / "tmp"
+    tmpdir.mkdir()
     before = tree(cwd)
-    code, stderr = execute(command(case, args), cwd, args)
+    code, stderr = execute(command(case, args), cwd, tmpdir, args)
     if case["ranks"] > 1:
         stderr = without_mpirun_notices(stderr)
     new_paths = sorted(tree(cwd) - before)
