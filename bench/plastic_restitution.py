@@ -3,7 +3,7 @@
 model and Johnson's (v/v_y)^(-1/4), from a sweep's restitution.csv.
 
 usage: plastic_restitution.py restitution.csv --yield-strain Y/E* [--nu 0.3]
-       [--markdown]
+       [--markdown] [--plot epsilon.png]
 
 v_y: the speed at which Hertz's peak pressure reaches p0/Y = 1.6128 Y (at
 nu = 0.3; computed here from Johnson's axis field), the speed of first yield
@@ -20,14 +20,18 @@ unloading = (8/15) E* R_p^(1/2) (delta_max - delta_p)^(5/2) gives epsilon^2)
 and from Thornton's closed form, and stops if the two differ by more than
 1e-9.
 
-Printed per point: v/v_y, epsilon and its bar, Thornton's epsilon, the
+Printed per point: the speed in m/s (for the table of a run with Units =
+SI, whose restitution.h5 holds the speed unit), v/v_y, epsilon and its bar, Thornton's epsilon, the
 local exponent d ln(epsilon) / d ln(v) between neighbouring points (Johnson:
 -1/4 when the impact is fully plastic), the plastic work / E(0), and the
-largest contact force over Thornton's at the same speed.
+largest contact force over Thornton's at the same speed. --plot draws
+epsilon(v) with its bars beside Thornton's model and a line of slope -1/4
+(Johnson) through the fastest point.
 """
 import argparse
 import csv
 import math
+import os
 import sys
 
 from scipy.optimize import brentq, minimize_scalar
@@ -38,6 +42,7 @@ p.add_argument("--yield-strain", type=float, required=True,
                help="Y / E*, E* = E / (1 - nu^2)")
 p.add_argument("--nu", type=float, default=0.3)
 p.add_argument("--markdown", action="store_true")
+p.add_argument("--plot", help="draw epsilon(v) into this PNG file")
 a = p.parse_args()
 nu = a.nu
 
@@ -113,17 +118,65 @@ for i, (x, eps, err, work, force) in enumerate(points):
         x0, e0 = points[i - 1][0], points[i - 1][1]
         slope = f"{math.log(eps / e0) / math.log(x / x0):+.3f}"
     lines.append((x, eps, err, t1, slope, work, force_ratio))
+# Below v_y Thornton's force is Hertz's: no ratio is shown.
+lines = [line[:-1] + ("" if math.isnan(line[-1]) else f"{line[-1]:.3f}",)
+         for line in lines]
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "postprocess"))
+from plot_restitution import speed_unit  # noqa: E402
+
+unit = speed_unit(a.table)
+si = unit is not None
+if si:
+    print(f"v_y = {v_y * unit:.4g} m/s")
 if a.markdown:
-    print("| v/v_y | ε | bar | Thornton | exponent | plastic work / E(0) "
-          "| F_max / Thornton's |")
-    print("|---|---|---|---|---|---|---|")
+    print("| " + ("v [m/s] | " if si else "") + "v/v_y | ε | bar | Thornton "
+          "| exponent | plastic work / E(0) | F_max / Thornton's |")
+    print("|---" * (8 if si else 7) + "|")
     for x, eps, err, t, slope, work, fr in lines:
-        print(f"| {x:.3g} | {eps:.5f} | {err:.1e} | {t:.4f} | {slope} | "
-              f"{work:.4f} | {fr:.3f} |")
+        speed = f"{x * v_y * unit:.3g} | " if si else ""
+        print(f"| {speed}{x:.3g} | {eps:.5f} | {err:.1e} | {t:.4f} | "
+              f"{slope} | {work:.4f} | {fr} |")
 else:
-    print(" v/v_y   epsilon     bar      Thornton  exponent  plastic work"
-          "  F_max/Thornton")
+    print(("v [m/s]  " if si else "") + " v/v_y   epsilon     bar      "
+          "Thornton  exponent  plastic work  F_max/Thornton")
     for x, eps, err, t, slope, work, fr in lines:
-        print(f"{x:6.3g}  {eps:.5f}  {err:8.1e}  {t:.4f}   {slope:>7}  "
-              f"{work:.4f}        {fr:.3f}")
+        speed = f"{x * v_y * unit:7.3g}  " if si else ""
+        print(f"{speed}{x:6.3g}  {eps:.5f}  {err:8.1e}  {t:.4f}   "
+              f"{slope:>7}  {work:.4f}        {fr:>5}")
+
+
+def plot(path):
+    """epsilon(v) with bars, Thornton's model and Johnson's slope."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    scale = v_y * unit if si else 1.0
+    x = [point[0] * scale for point in points]
+    fig, ax = plt.subplots(figsize=(6, 4.2))
+    ax.errorbar(x, [point[1] for point in points],
+                yerr=[point[2] for point in points], fmt="o-", capsize=3,
+                ms=4, label="finite elements")
+    lo, hi = math.log(min(points)[0]), math.log(max(points)[0])
+    curve = [math.exp(lo + (hi - lo) * k / 200) for k in range(201)]
+    ax.plot([u * scale for u in curve],
+            [thornton_closed_form(u * v_y) if u > 1 else 1.0 for u in curve],
+            "--", label=f"Thornton, p_y = {ratio:.4g} Y (first yield)")
+    last = max(points)
+    johnson = [u for u in curve if u >= last[0] / 10]
+    ax.plot([u * scale for u in johnson],
+            [last[1] * (u / last[0]) ** -0.25 for u in johnson], ":",
+            label="slope -1/4 (Johnson)")
+    ax.axvline(scale, color="grey", lw=0.8, label="v_y, first yield")
+    ax.set_xscale("log")
+    ax.set_xlabel("v_i [m/s]" if si else "v_i / v_y")
+    ax.set_ylabel("epsilon")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    print("wrote", path)
+
+
+if a.plot:
+    plot(a.plot)
 sys.exit(1 if failures else 0)

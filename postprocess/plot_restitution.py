@@ -66,46 +66,51 @@ def plastic_fits(csv_path):
     return law.get("thornton_fit"), law.get("luding_fit")
 
 
-p = argparse.ArgumentParser()
-p.add_argument("files", nargs="+")
-p.add_argument("-o", "--output", default="epsilon.png")
-a = p.parse_args()
+def main():
+    p = argparse.ArgumentParser()
+    p.add_argument("files", nargs="+")
+    p.add_argument("-o", "--output", default="epsilon.png")
+    a = p.parse_args()
 
-units = [speed_unit(path) for path in a.files]
-if len({u is None for u in units}) > 1:
-    sys.exit("plot_restitution: SI and dimensionless tables cannot share a plot")
-si = units[0] is not None
-fig, ax = plt.subplots(figsize=(6, 4.2))
-for path, c in zip(a.files, units):
-    rows = list(csv.DictReader(open(path)))
-    for nu2 in sorted({r["poisson_ratio_2d"] for r in rows}):
-        sel = [r for r in rows if r["poisson_ratio_2d"] == nu2
-               and r["epsilon"] not in ("", "nan")]
-        v = [float(r["velocity"]) * (c if si else 1.0) for r in sel]
-        eps = [float(r["epsilon"]) for r in sel]
-        err = [float(r["epsilon_error"]) if r["epsilon_error"] not in ("", "nan")
-               else 0.0 for r in sel]
-        ax.errorbar(v, eps, yerr=err, fmt="o-", capsize=3, ms=4,
-                    label=f"FE, nu2 = {float(nu2):.2f}")
-    fit, luding = plastic_fits(path)
-    if fit and v:
-        scale = c if si else 1.0
-        lo, hi = math.log(min(v)), math.log(max(v))
-        curve = [math.exp(lo + (hi - lo) * k / 200) for k in range(201)]
-        ax.plot(curve, [thornton_epsilon(x / (fit["yield_speed"] * scale))
-                        for x in curve], "--",
-                label="Thornton (LIGGGHTS thornton_ning), p_y = "
-                      f"{fit['limiting_pressure_over_yield_stress']:.3g} Y")
-    if luding and v:
-        a_l = luding["stiffness_ratio"] - 1.0
-        ax.plot(curve, [luding_epsilon(x / (luding["plastic_speed"] * scale),
-                                       a_l) for x in curve], ":",
-                label="Luding (Yade LudingMat), kp/k1 = "
-                      f"{luding['stiffness_ratio']:.3g}")
-ax.set_xscale("log")
-ax.set_xlabel("v_i [m/s]" if si else "v_i / c")
-ax.set_ylabel("epsilon")
-ax.legend(fontsize=8)
-fig.tight_layout()
-fig.savefig(a.output, dpi=120)
-print("wrote", a.output)
+    units = [speed_unit(path) for path in a.files]
+    if len({u is None for u in units}) > 1:
+        sys.exit("plot_restitution: SI and dimensionless tables cannot share a plot")
+    si = units[0] is not None
+    fig, ax = plt.subplots(figsize=(6, 4.2))
+    for path, c in zip(a.files, units):
+        rows = list(csv.DictReader(open(path)))
+        for nu2 in sorted({r["poisson_ratio_2d"] for r in rows}):
+            sel = [r for r in rows if r["poisson_ratio_2d"] == nu2
+                   and r["epsilon"] not in ("", "nan")]
+            v = [float(r["velocity"]) * (c if si else 1.0) for r in sel]
+            eps = [float(r["epsilon"]) for r in sel]
+            err = [float(r["epsilon_error"]) if r["epsilon_error"] not in ("", "nan")
+                   else 0.0 for r in sel]
+            ax.errorbar(v, eps, yerr=err, fmt="o-", capsize=3, ms=4,
+                        label=f"FE, nu2 = {float(nu2):.2f}")
+        fit, luding = plastic_fits(path)
+        if fit and v:
+            scale = c if si else 1.0
+            lo, hi = math.log(min(v)), math.log(max(v))
+            curve = [math.exp(lo + (hi - lo) * k / 200) for k in range(201)]
+            ax.plot(curve, [thornton_epsilon(x / (fit["yield_speed"] * scale))
+                            for x in curve], "--",
+                    label="Thornton (LIGGGHTS thornton_ning), p_y = "
+                          f"{fit['limiting_pressure_over_yield_stress']:.3g} Y")
+        if luding and v:
+            a_l = luding["stiffness_ratio"] - 1.0
+            ax.plot(curve, [luding_epsilon(x / (luding["plastic_speed"] * scale),
+                                           a_l) for x in curve], ":",
+                    label="Luding (Yade LudingMat), kp/k1 = "
+                          f"{luding['stiffness_ratio']:.3g}")
+    ax.set_xscale("log")
+    ax.set_xlabel("v_i [m/s]" if si else "v_i / c")
+    ax.set_ylabel("epsilon")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(a.output, dpi=120)
+    print("wrote", a.output)
+
+
+if __name__ == "__main__":
+    main()
