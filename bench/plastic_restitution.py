@@ -21,10 +21,11 @@ and from Thornton's closed form, and stops if the two differ by more than
 1e-9.
 
 Printed per point: the speed in m/s (for the table of a run with Units =
-SI, whose restitution.h5 holds the speed unit), v/v_y, epsilon and its bar, Thornton's epsilon, the
-local exponent d ln(epsilon) / d ln(v) between neighbouring points (Johnson:
--1/4 when the impact is fully plastic), the plastic work / E(0), and the
-largest contact force over Thornton's at the same speed. --plot draws
+SI, whose restitution.h5 holds the speed unit), v/v_y, epsilon and its bar,
+Thornton's epsilon, the local exponent d ln(epsilon) / d ln(v) between
+neighbouring points (Johnson: -1/4 when the impact is fully plastic), the
+plastic work / E(0), and the largest contact force over Thornton's at the
+same speed. --plot draws
 epsilon(v) with its bars beside Thornton's model and a line of slope -1/4
 (Johnson) through the fastest point.
 """
