@@ -25,9 +25,8 @@ SI, whose restitution.h5 holds the speed unit), v/v_y, epsilon and its bar,
 Thornton's epsilon, the local exponent d ln(epsilon) / d ln(v) between
 neighbouring points (Johnson: -1/4 when the impact is fully plastic), the
 plastic work / E(0), and the largest contact force over Thornton's at the
-same speed. --plot draws
-epsilon(v) with its bars beside Thornton's model and a line of slope -1/4
-(Johnson) through the fastest point.
+same speed. --plot draws epsilon(v) with its bars beside Thornton's model
+and a line of slope -1/4 (Johnson) through the fastest point.
 """
 import argparse
 import csv
@@ -36,6 +35,10 @@ import os
 import sys
 
 from scipy.optimize import brentq, minimize_scalar
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "postprocess"))
+from plot_restitution import speed_unit  # noqa: E402
 
 p = argparse.ArgumentParser()
 p.add_argument("table")
@@ -122,10 +125,6 @@ for i, (x, eps, err, work, force) in enumerate(points):
 # Below v_y Thornton's force is Hertz's: no ratio is shown.
 lines = [line[:-1] + ("" if math.isnan(line[-1]) else f"{line[-1]:.3f}",)
          for line in lines]
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                "..", "postprocess"))
-from plot_restitution import speed_unit  # noqa: E402
-
 unit = speed_unit(a.table)
 si = unit is not None
 if si:
